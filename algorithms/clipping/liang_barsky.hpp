@@ -1,0 +1,74 @@
+// Liang-Barsky line clipping against an axis-aligned window.
+//
+// The segment is written parametrically, P(t) = P0 + t (P1 - P0) for t in [0, 1]. Each window
+// edge k is a half-plane, and P(t) lies inside it exactly when p_k t <= q_k, with
+//
+//     k = 1 left:    p_1 = -dx,  q_1 = x0 - xmin
+//     k = 2 right:   p_2 =  dx,  q_2 = xmax - x0
+//     k = 3 bottom:  p_3 = -dy,  q_3 = y0 - ymin
+//     k = 4 top:     p_4 =  dy,  q_4 = ymax - y0
+//
+// If p_k = 0 the segment is parallel to edge k: wholly inside it (q_k >= 0) or wholly outside
+// (q_k < 0, reject). Otherwise the line crosses the edge at r_k = q_k / p_k; p_k < 0 means the
+// line enters the half-plane there (t_enter = max(t_enter, r_k)), p_k > 0 that it leaves
+// (t_leave = min(t_leave, r_k)). Once t_enter > t_leave nothing is left: reject. After all four
+// edges the visible part is P(t_enter)..P(t_leave).
+//
+// Steps: setup, one per edge (entering / leaving / parallel), then reject or accept.
+// Boundaries count as inside: a segment touching the window at one point is visible there.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include <glm/vec2.hpp>
+
+#include "core/run.hpp"
+
+namespace cg {
+
+struct LiangBarsky {
+    struct Window {
+        double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+        bool operator==(const Window&) const = default;
+    };
+    struct Input {
+        Window window;
+        glm::dvec2 p0{0}, p1{0};
+        bool operator==(const Input&) const = default;
+    };
+    struct Result {
+        bool visible = false;
+        double t_enter = 0, t_leave = 1;  // at the end (or at the moment of rejection)
+        std::optional<glm::dvec2> q0, q1;  // the visible part, when visible
+        bool operator==(const Result&) const = default;
+    };
+
+    enum class Phase : std::uint8_t { Setup, Edge, Reject, Accept, Done };
+    enum class Verdict : std::uint8_t { None, Entering, Leaving, ParallelInside, ParallelOutside };
+
+    struct State {
+        Input in;
+        Phase phase = Phase::Setup;
+        int k = 0;  // the edge tested last, 1..4 (0 before the first)
+        Verdict verdict = Verdict::None;
+        double dx = 0, dy = 0;
+        double t_enter = 0, t_leave = 1;
+        double p_k = 0, q_k = 0, r_k = 0;
+        bool visible = false;
+        bool operator==(const State&) const = default;
+    };
+
+    static const Spec& spec();
+    static void validate(const Input& in);  // throws InputError naming the field
+    static State start(const Input& in);
+    static void step(State& s, StepInfo* info);
+    static bool done(const State& s) { return s.phase == Phase::Done; }
+    static Result result(const State& s);
+    static void draw(const State& s, Scene& scene);
+
+    // The same clipping as one straight-line function, for the benchmark's comparison.
+    static Result clip(const Input& in);
+};
+
+}  // namespace cg

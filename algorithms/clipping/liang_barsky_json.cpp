@@ -1,0 +1,41 @@
+// Liang-Barsky's JSON:
+//   input  {"window": {"xmin", "ymin", "xmax", "ymax"}, "p0": [x, y], "p1": [x, y]}
+//   result {"visible", "t_enter", "t_leave", "q0": [x, y] | null, "q1": [x, y] | null}
+#include "clipping/liang_barsky.hpp"
+#include "io/registry.hpp"
+
+namespace cg {
+
+template <>
+struct JsonIo<LiangBarsky> {
+    static LiangBarsky::Input input(const json& j) {
+        Reader r(j);
+        r.only({"window", "p0", "p1"});
+        Reader w = r.object("window");
+        w.only({"xmin", "ymin", "xmax", "ymax"});
+        LiangBarsky::Input in;
+        in.window = {w.number("xmin"), w.number("ymin"), w.number("xmax"), w.number("ymax")};
+        in.p0 = r.point2("p0");
+        in.p1 = r.point2("p1");
+        return in;
+    }
+
+    static json result(const LiangBarsky::Result& r) {
+        return json{{"visible", r.visible},
+                    {"t_enter", r.t_enter},
+                    {"t_leave", r.t_leave},
+                    {"q0", r.q0 ? to_json(*r.q0) : json(nullptr)},
+                    {"q1", r.q1 ? to_json(*r.q1) : json(nullptr)}};
+    }
+
+    static json example() {
+        // The segment enters through the left edge and leaves through the top one.
+        return json{{"window", {{"xmin", 1}, {"ymin", 1}, {"xmax", 5}, {"ymax", 4}}},
+                    {"p0", {0, 2}},
+                    {"p1", {4, 6}}};
+    }
+};
+
+Algorithm liang_barsky_algorithm() { return make_algorithm<LiangBarsky>(); }
+
+}  // namespace cg

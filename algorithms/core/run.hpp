@@ -1,0 +1,64 @@
+// One running algorithm behind a uniform interface.
+//
+// An algorithm is written as a plain struct of static functions over its own value types:
+//
+//     struct LiangBarsky {
+//         using Input = ...; using State = ...; using Result = ...;
+//         static const Spec& spec();
+//         static State start(const Input&);             // validates, throws InputError
+//         static void step(State&, StepInfo* info);      // one teachable step; info may be null
+//         static bool done(const State&);
+//         static Result result(const State&);
+//         static void draw(const State&, Scene&);
+//     };
+//
+// The State is a copyable value with a defaulted operator==, so a copy is a snapshot and the
+// determinism tests can compare states. RunOf<A> wraps it for the registry, the timeline and
+// the viewer, which never see the concrete types. Passing a null StepInfo skips the narration
+// so that running to completion costs about as much as a plain loop.
+#pragma once
+
+#include <memory>
+
+#include "core/scene.hpp"
+#include "core/step.hpp"
+
+namespace cg {
+
+class Run {
+public:
+    virtual ~Run() = default;
+    virtual std::unique_ptr<Run> clone() const = 0;
+    virtual const Spec& spec() const = 0;
+    virtual bool done() const = 0;
+    virtual void step(StepInfo* info) = 0;  // precondition: !done()
+    virtual void draw(Scene& scene) const = 0;
+    virtual bool same_state(const Run& other) const = 0;
+};
+
+template <class A>
+class RunOf final : public Run {
+public:
+    explicit RunOf(typename A::State s) : state(std::move(s)) {}
+
+    std::unique_ptr<Run> clone() const override { return std::make_unique<RunOf>(*this); }
+    const Spec& spec() const override { return A::spec(); }
+    bool done() const override { return A::done(state); }
+    void step(StepInfo* info) override { A::step(state, info); }
+    void draw(Scene& scene) const override { A::draw(state, scene); }
+    bool same_state(const Run& other) const override {
+        auto* o = dynamic_cast<const RunOf*>(&other);
+        return o && o->state == state;
+    }
+
+    typename A::State state;
+};
+
+// Steps a state to the end without narration: the "plain loop" path of the benchmarks.
+template <class A>
+typename A::Result run_to_end(typename A::State s) {
+    while (!A::done(s)) A::step(s, nullptr);
+    return A::result(s);
+}
+
+}  // namespace cg

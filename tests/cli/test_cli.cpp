@@ -1,0 +1,140 @@
+// The CLI as a user reaches it: build/bin/cgsandbox, its output and its exit codes.
+#include <catch2/catch.hpp>
+
+#include "io/json.hpp"
+#include "support/process.hpp"
+
+using cg::json;
+using cg::test::cgsandbox;
+
+namespace {
+const std::string kGood =
+    R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 2], "p1": [4, 6]})";
+}
+
+TEST_CASE("cli: list names each algorithm with its title", "[cli]") {
+    auto r = cgsandbox({"list"});
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("liang-barsky\tLiang-Barsky line clipping\n"));
+}
+
+TEST_CASE("cli: example prints an input that runs", "[cli]") {
+    auto ex = cgsandbox({"example", "liang-barsky"});
+    REQUIRE(ex.exit_code == 0);
+    json input = json::parse(ex.out);
+    CHECK(input.contains("window"));
+    auto r = cgsandbox({"run", "liang-barsky", "--input", "-"}, ex.out);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.empty());
+}
+
+TEST_CASE("cli: run prints the result as one JSON object", "[cli]") {
+    auto r = cgsandbox({"run", "liang-barsky", "--input", cg::test::write_temp("good.json", kGood)});
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out == R"({"visible":true,"t_enter":0.25,"t_leave":0.5,"q0":[1.0,3.0],"q1":[2.0,4.0]})" "\n");
+
+    auto missed = cgsandbox({"run", "liang-barsky", "--input", "-"},
+                            R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 5], "p1": [6, 5]})");
+    REQUIRE(missed.exit_code == 0);
+    CHECK(missed.out == R"({"visible":false,"t_enter":0.16666666666666666,"t_leave":0.8333333333333334,"q0":null,"q1":null})" "\n");
+}
+
+TEST_CASE("cli: run --trace prints one JSON line per step, then the result", "[cli]") {
+    auto r = cgsandbox({"run", "liang-barsky", "--trace"});
+    REQUIRE(r.exit_code == 0);
+    std::vector<json> lines;
+    std::istringstream in(r.out);
+    for (std::string line; std::getline(in, line);) lines.push_back(json::parse(line));
+    REQUIRE(lines.size() == 7);
+    for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+        CHECK(lines[i]["index"] == i + 1);
+        CHECK(lines[i]["event"].is_string());
+        CHECK(lines[i]["line"].is_number_integer());
+        CHECK(lines[i]["narration"].is_string());
+        CHECK(lines[i]["variables"].is_object());
+    }
+    CHECK(lines[1]["event"] == "entering");
+    CHECK(lines[1]["variables"]["r_k"] == 0.25);
+    CHECK(lines.back()["visible"] == true);
+    // Byte-identical on a second run.
+    CHECK(cgsandbox({"run", "liang-barsky", "--trace"}).out == r.out);
+}
+
+TEST_CASE("cli: bad input is one clear line naming file and field, exit 2", "[cli][errors]") {
+    struct Case {
+        const char* name;
+        std::string text;
+        std::string expected;  // what stderr must contain after the file name
+    };
+    const std::vector<Case> cases = {
+        {"missing field", R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5}, "p0": [0, 2], "p1": [4, 6]})",
+         "window.ymax: is missing"},
+        {"wrong type", R"({"window": {"xmin": "one", "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 2], "p1": [4, 6]})",
+         "window.xmin: must be a number, got a string (\"one\")"},
+        {"point of wrong size", R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0], "p1": [4, 6]})",
+         "p0: must be a point [x, y]"},
+        {"null coordinate", R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, null], "p1": [4, 6]})",
+         "p0[1]: must be a number, got null"},
+        {"NaN literal", R"({"window": {"xmin": NaN, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 2], "p1": [4, 6]})",
+         "window.xmin: not valid JSON: parse error at line 1"},
+        {"infinity by overflow", R"({"window": {"xmin": 1e999, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 2], "p1": [4, 6]})",
+         "window.xmin: not valid JSON: number overflow"},
+        {"xmin > xmax", R"({"window": {"xmin": 6, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 2], "p1": [4, 6]})",
+         "window.xmin: must not exceed window.xmax (6 > 5)"},
+        {"unknown field", R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 2], "p1": [4, 6], "p2": [1, 1]})",
+         "p2: is not a known field (expected: window, p0, p1)"},
+        {"not an object", "[1, 2, 3]", "the input must be a JSON object"},
+        {"empty file", "", "not valid JSON"},
+        {"overflowing differences", R"({"window": {"xmin": -1e308, "ymin": 1, "xmax": 1e308, "ymax": 4}, "p0": [0, 2], "p1": [4, 6]})",
+         "differences overflow"},
+    };
+    for (const Case& c : cases) {
+        DYNAMIC_SECTION(c.name) {
+            const std::string path = cg::test::write_temp("bad.json", c.text);
+            auto r = cgsandbox({"run", "liang-barsky", "--input", path});
+            CHECK(r.exit_code == 2);
+            CHECK(r.out.empty());
+            CHECK_THAT(r.err, Catch::StartsWith("cgsandbox: " + path + ": ") && Catch::Contains(c.expected));
+            CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+        }
+    }
+    SECTION("from stdin the source is named <stdin>") {
+        auto r = cgsandbox({"run", "liang-barsky", "--input", "-"}, "{");
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.err, Catch::StartsWith("cgsandbox: <stdin>: not valid JSON"));
+    }
+    SECTION("a missing file") {
+        auto r = cgsandbox({"run", "liang-barsky", "--input", "/nonexistent/in.json"});
+        CHECK(r.exit_code == 2);
+        CHECK(r.err == "cgsandbox: /nonexistent/in.json: cannot open file\n");
+    }
+    SECTION("an unknown algorithm") {
+        auto r = cgsandbox({"run", "no-such-thing"});
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.err, Catch::Contains("unknown algorithm \"no-such-thing\""));
+    }
+    SECTION("an unknown option") {
+        auto r = cgsandbox({"run", "liang-barsky", "--frobnicate"});
+        CHECK(r.exit_code == 2);
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    }
+}
+
+TEST_CASE("cli: --help works on every command", "[cli]") {
+    for (const char* cmd : {"list", "example", "run", "render"}) {
+        auto r = cgsandbox({cmd, "--help"});
+        CAPTURE(cmd);
+        CHECK(r.exit_code == 0);
+        CHECK_THAT(r.out, Catch::Contains("Usage") || Catch::Contains("USAGE") || Catch::Contains("usage"));
+    }
+    CHECK(cgsandbox({"--help"}).exit_code == 0);
+}
+
+TEST_CASE("cli: the viewer without a display says so in one line", "[cli][gui]") {
+    auto r = cg::test::run_process({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", CG_BINARY});
+    CHECK(r.exit_code != 0);
+    CHECK(r.exit_code < 128);  // not a crash
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_THAT(r.err, Catch::Contains("display") && Catch::Contains("xvfb-run") &&
+                          Catch::Contains("cgsandbox render"));
+}
