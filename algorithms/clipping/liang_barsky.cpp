@@ -139,26 +139,20 @@ LiangBarsky::State LiangBarsky::start(const Input& in) {
     return s;
 }
 
-void LiangBarsky::step(State& s, StepInfo* info) {
+// The algorithm proper: one step of the math. Kept apart from the narration below so that
+// running to completion (no StepInfo) costs about what the plain clip() does.
+void LiangBarsky::advance(State& s) {
     switch (s.phase) {
-        case Phase::Setup: {  // Compute the direction and the full parameter range
+        case Phase::Setup:  // Compute the direction and the full parameter range
             s.dx = s.in.p1.x - s.in.p0.x;
             s.dy = s.in.p1.y - s.in.p0.y;
             s.t_enter = 0;
             s.t_leave = 1;
             s.phase = Phase::Edge;
-            if (info) {
-                info->event = "setup";
-                info->line = kLineInit;
-                info->narration = "dx = x1 − x0 = " + num(s.dx) + ", dy = y1 − y0 = " +
-                                  num(s.dy) + "; start with t_enter = 0 and t_leave = 1.";
-            }
-            break;
-        }
+            return;
         case Phase::Edge: {  // Test one window edge: p_k t <= q_k
             const int k = ++s.k;
             edge_pq(s, k, s.p_k, s.q_k);
-            const double t_enter_before = s.t_enter, t_leave_before = s.t_leave;
             if (s.p_k == 0) {
                 s.r_k = 0;
                 s.verdict = s.q_k < 0 ? Verdict::ParallelOutside : Verdict::ParallelInside;
@@ -166,84 +160,95 @@ void LiangBarsky::step(State& s, StepInfo* info) {
                 s.r_k = s.q_k / s.p_k;
                 if (s.p_k < 0) {
                     s.verdict = Verdict::Entering;
+                    s.t_before = s.t_enter;
                     s.t_enter = std::max(s.t_enter, s.r_k);
                 } else {
                     s.verdict = Verdict::Leaving;
+                    s.t_before = s.t_leave;
                     s.t_leave = std::min(s.t_leave, s.r_k);
                 }
             }
             const bool reject = s.verdict == Verdict::ParallelOutside || s.t_enter > s.t_leave;
             s.phase = reject ? Phase::Reject : (k == 4 ? Phase::Accept : Phase::Edge);
-            if (info) {
-                std::string head = "Edge " + std::to_string(k) + " (" + kEdgeName[k] + ", " +
-                                   edge_equation(s, k) + "): " + pq_text(s) + ". ";
-                std::string rk = "r_" + std::to_string(k) + " = q/p = " + num(s.q_k) + "/" +
-                                 num(s.p_k) + " = " + num(s.r_k);
-                switch (s.verdict) {
-                    case Verdict::ParallelInside:
-                        info->event = "parallel-inside";
-                        info->line = kLineParallel;
-                        info->narration = head + "p = 0 and q ≥ 0: parallel to this edge and on "
-                                                 "its inner side, so nothing changes.";
-                        break;
-                    case Verdict::ParallelOutside:
-                        info->event = "parallel-outside";
-                        info->line = kLineParallelReject;
-                        info->narration =
-                            head + "p = 0 and q < 0: parallel to this edge and outside it.";
-                        break;
-                    case Verdict::Entering:
-                        info->event = "entering";
-                        info->line = kLineEntering;
-                        info->narration = head + "p < 0, entering: " + rk + ", so t_enter = max(" +
-                                          num(t_enter_before) + ", " + num(s.r_k) + ") = " +
-                                          num(s.t_enter) + ".";
-                        break;
-                    default:
-                        info->event = "leaving";
-                        info->line = kLineLeaving;
-                        info->narration = head + "p > 0, leaving: " + rk + ", so t_leave = min(" +
-                                          num(t_leave_before) + ", " + num(s.r_k) + ") = " +
-                                          num(s.t_leave) + ".";
-                        break;
-                }
-            }
-            break;
+            return;
         }
-        case Phase::Reject: {  // Nothing is left inside
+        case Phase::Reject:  // Nothing is left inside
             s.visible = false;
             s.phase = Phase::Done;
-            if (info) {
-                info->event = "reject";
-                if (s.verdict == Verdict::ParallelOutside) {
-                    info->line = kLineParallelReject;
-                    info->narration = std::string("The segment runs outside the ") +
-                                      kEdgeName[s.k] + " edge along its whole length: reject.";
-                } else {
-                    info->line = kLineEmptyReject;
-                    info->narration = "t_enter = " + num(s.t_enter) + " > t_leave = " +
-                                      num(s.t_leave) + ": the segment misses the window, reject.";
-                }
-            }
-            break;
-        }
-        case Phase::Accept: {  // The visible part between the two parameters
+            return;
+        case Phase::Accept:  // The visible part lies between the two parameters
             s.visible = true;
             s.phase = Phase::Done;
-            if (info) {
-                info->event = "accept";
-                info->line = kLineAccept;
-                info->narration = "Q0 = P(" + num(s.t_enter) + ") = " +
-                                  num(point_at(s.in, s.t_enter)) + " and Q1 = P(" +
-                                  num(s.t_leave) + ") = " + num(point_at(s.in, s.t_leave)) +
-                                  ": this part of the segment is visible.";
-            }
-            break;
-        }
+            return;
         case Phase::Done:
             return;  // a finished machine stays finished
     }
-    if (info) fill_vars(s, *info);
+}
+
+// What the step just taken means, told with its numbers. `s` is the state after the step.
+void LiangBarsky::narrate(const State& s, StepInfo& info) {
+    const int k = s.k;
+    if (s.phase == Phase::Edge && k == 0) return;  // cannot happen: setup always moves on
+    if (k == 0) {
+        info.event = "setup";
+        info.line = kLineInit;
+        info.narration = "dx = x1 − x0 = " + num(s.dx) + ", dy = y1 − y0 = " + num(s.dy) +
+                         "; start with t_enter = 0 and t_leave = 1.";
+    } else if (s.phase != Phase::Done) {  // an edge was just tested
+        std::string head = "Edge " + std::to_string(k) + " (" + kEdgeName[k] + ", " +
+                           edge_equation(s, k) + "): " + pq_text(s) + ". ";
+        std::string rk = "r_" + std::to_string(k) + " = q/p = " + num(s.q_k) + "/" + num(s.p_k) +
+                         " = " + num(s.r_k);
+        switch (s.verdict) {
+            case Verdict::ParallelInside:
+                info.event = "parallel-inside";
+                info.line = kLineParallel;
+                info.narration = head + "p = 0 and q ≥ 0: parallel to this edge and on its inner "
+                                        "side, so nothing changes.";
+                break;
+            case Verdict::ParallelOutside:
+                info.event = "parallel-outside";
+                info.line = kLineParallelReject;
+                info.narration = head + "p = 0 and q < 0: parallel to this edge and outside it.";
+                break;
+            case Verdict::Entering:
+                info.event = "entering";
+                info.line = kLineEntering;
+                info.narration = head + "p < 0, entering: " + rk + ", so t_enter = max(" +
+                                 num(s.t_before) + ", " + num(s.r_k) + ") = " + num(s.t_enter) + ".";
+                break;
+            default:
+                info.event = "leaving";
+                info.line = kLineLeaving;
+                info.narration = head + "p > 0, leaving: " + rk + ", so t_leave = min(" +
+                                 num(s.t_before) + ", " + num(s.r_k) + ") = " + num(s.t_leave) + ".";
+                break;
+        }
+    } else if (!s.visible) {
+        info.event = "reject";
+        if (s.verdict == Verdict::ParallelOutside) {
+            info.line = kLineParallelReject;
+            info.narration = std::string("The segment runs outside the ") + kEdgeName[k] +
+                             " edge along its whole length: reject.";
+        } else {
+            info.line = kLineEmptyReject;
+            info.narration = "t_enter = " + num(s.t_enter) + " > t_leave = " + num(s.t_leave) +
+                             ": the segment misses the window, reject.";
+        }
+    } else {
+        info.event = "accept";
+        info.line = kLineAccept;
+        info.narration = "Q0 = P(" + num(s.t_enter) + ") = " + num(point_at(s.in, s.t_enter)) +
+                         " and Q1 = P(" + num(s.t_leave) + ") = " +
+                         num(point_at(s.in, s.t_leave)) + ": this part of the segment is visible.";
+    }
+    fill_vars(s, info);
+}
+
+void LiangBarsky::step(State& s, StepInfo* info) {
+    if (s.phase == Phase::Done) return;
+    advance(s);
+    if (info) narrate(s, *info);
 }
 
 LiangBarsky::Result LiangBarsky::result(const State& s) {

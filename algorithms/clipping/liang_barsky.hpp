@@ -55,6 +55,7 @@ struct LiangBarsky {
         double dx = 0, dy = 0;
         double t_enter = 0, t_leave = 1;
         double p_k = 0, q_k = 0, r_k = 0;
+        double t_before = 0;  // the t that edge k's test just changed, before it changed
         bool visible = false;
         bool operator==(const State&) const = default;
     };
@@ -62,13 +63,17 @@ struct LiangBarsky {
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
     static State start(const Input& in);
-    static void step(State& s, StepInfo* info);
+    static void step(State& s, StepInfo* info);  // advance, then narrate if info is given
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
     static void draw(const State& s, Scene& scene);
 
     // The same clipping as one straight-line function, for the benchmark's comparison.
     static Result clip(const Input& in);
+
+private:
+    static void advance(State& s);
+    [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
 };
 
 }  // namespace cg
