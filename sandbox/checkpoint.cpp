@@ -1,0 +1,51 @@
+#include "checkpoint.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+namespace cg {
+
+Checkpoint checkpoint_from_json(const json& j, const Registry& registry) {
+    Reader r(j);
+    r.only({"algorithm", "input", "step", "view"});
+    Checkpoint c;
+    c.algorithm = r.string("algorithm");
+    if (!registry.find(c.algorithm))
+        throw InputError("algorithm", "unknown algorithm \"" + c.algorithm +
+                                          "\" (see `cgsandbox list`)");
+    c.input = r.get("input");
+    long long step = r.integer("step");
+    if (step < 0) throw InputError("step", "must be 0 or more, got " + std::to_string(step));
+    c.step = static_cast<std::size_t>(step);
+    if (r.has("view")) {
+        Reader v = r.object("view");
+        v.only({"center", "zoom"});
+        View2 view;
+        view.center = v.point2("center");
+        view.zoom = v.number("zoom");
+        if (!(view.zoom > 0)) throw InputError("view.zoom", "must be positive");
+        c.view = view;
+    }
+    return c;
+}
+
+json checkpoint_to_json(const Checkpoint& c) {
+    json j{{"algorithm", c.algorithm}, {"input", c.input}, {"step", c.step}};
+    if (c.view) j["view"] = json{{"center", to_json(c.view->center)}, {"zoom", c.view->zoom}};
+    return j;
+}
+
+std::string read_text_file(const std::string& path) {
+    if (path == "-") {
+        std::ostringstream ss;
+        ss << std::cin.rdbuf();
+        return ss.str();
+    }
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw InputError("", "cannot open file");
+    return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+}
+
+}  // namespace cg

@@ -1,0 +1,313 @@
+#include "cli.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "checkpoint.hpp"
+#include "io/exam.hpp"
+#include "io/lesson.hpp"
+#include "io/registry.hpp"
+#include "io/worked.hpp"
+#include "viewer/app.hpp"
+
+namespace cg {
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+constexpr std::size_t kMaxSteps = 50'000'000;  // no algorithm here comes near; a hang guard
+
+// An error for the user: printed as "cgsandbox: <source>: <field>: <reason>".
+struct UserError {
+    std::string source;  // file name, "<stdin>", or empty
+    std::string message;
+};
+
+[[noreturn]] void fail(const std::string& source, const InputError& e) {
+    throw UserError{source, e.what()};
+}
+
+const Algorithm& find_algorithm(const Registry& registry, const std::string& id) {
+    if (const Algorithm* a = registry.find(id)) return *a;
+    throw UserError{"", "unknown algorithm \"" + id + "\"; `cgsandbox list` shows them"};
+}
+
+std::string source_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+// The input from --input FILE (or "-"), or the algorithm's example when none is given.
+json load_input(const Algorithm& algorithm, const std::string& path) {
+    if (path.empty()) return algorithm.example();
+    try {
+        return parse_json(read_text_file(path));
+    } catch (const InputError& e) {
+        fail(source_name(path), e);
+    }
+}
+
+std::unique_ptr<Run> create_run(const Algorithm& algorithm, const json& input,
+                                const std::string& source) {
+    try {
+        return algorithm.create(input);
+    } catch (const InputError& e) {
+        fail(source, e);
+    }
+}
+
+int cmd_list(const Registry& registry) {
+    for (const Algorithm& a : registry.all())
+        std::cout << a.spec->id << "\t" << a.spec->title << "\n";
+    return 0;
+}
+
+int cmd_example(const Registry& registry, const std::string& id) {
+    std::cout << pretty(find_algorithm(registry, id).example()) << "\n";
+    return 0;
+}
+
+int cmd_run(const Registry& registry, const std::string& id, const std::string& input_path,
+            bool trace) {
+    const Algorithm& algorithm = find_algorithm(registry, id);
+    const std::string source = input_path.empty() ? "example input" : source_name(input_path);
+    std::unique_ptr<Run> run = create_run(algorithm, load_input(algorithm, input_path), source);
+    std::string out;
+    std::size_t index = 0;
+    while (!run->done()) {
+        if (++index > kMaxSteps) throw UserError{source, "run exceeded the step limit"};
+        if (trace) {
+            StepInfo info;
+            run->step(&info);
+            out += step_to_json(index, info).dump() + "\n";
+        } else {
+            run->step(nullptr);
+        }
+    }
+    out += algorithm.result(*run).dump() + "\n";
+    std::fwrite(out.data(), 1, out.size(), stdout);
+    return 0;
+}
+
+// Writes text to --out FILE, or to stdout.
+void emit(const std::string& text, const std::string& out_path) {
+    if (out_path.empty()) {
+        std::fwrite(text.data(), 1, text.size(), stdout);
+        return;
+    }
+    std::FILE* f = std::fopen(out_path.c_str(), "wb");
+    if (!f || std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fclose(f) != 0)
+        throw UserError{out_path, "cannot write the file"};
+}
+
+LessonLibrary load_lesson_library(const Registry& registry) {
+    return load_lessons(default_lessons_dir(), registry);
+}
+
+struct WorkedOptions {
+    std::string id, input_path, preset, format = "md", out_path;
+};
+
+int cmd_worked(const Registry& registry, const WorkedOptions& o) {
+    const Algorithm& algorithm = find_algorithm(registry, o.id);
+    json input;
+    std::string source, subtitle;
+    if (!o.preset.empty()) {
+        if (!o.input_path.empty()) throw UserError{"", "give --input or --preset, not both"};
+        const LessonLibrary lessons = load_lesson_library(registry);
+        const Lesson* lesson = lessons.for_algorithm(o.id);
+        if (!lesson) throw UserError{"", "no lesson for " + o.id + ", so no presets"};
+        const LessonPreset* preset = lesson->preset(o.preset);
+        if (!preset) {
+            std::string names;
+            for (const auto& p : lesson->presets) names += (names.empty() ? "\"" : ", \"") + p.name + "\"";
+            throw UserError{lesson->file, "no preset \"" + o.preset + "\" (presets: " + names + ")"};
+        }
+        input = preset->input;
+        source = lesson->file;
+        subtitle = preset->name;
+    } else {
+        source = o.input_path.empty() ? "example input" : source_name(o.input_path);
+        input = load_input(algorithm, o.input_path);
+    }
+    WorkedExample w;
+    try {
+        w = work(algorithm, exam_for_input(algorithm, input), subtitle);
+    } catch (const InputError& e) {
+        fail(source, e);
+    }
+    emit(o.format == "json" ? pretty(worked_json(w)) + "\n" : worked_markdown(w), o.out_path);
+    return 0;
+}
+
+struct ExamOptions {
+    std::string id, format = "md", out_path;
+    std::uint64_t seed = 1;
+    bool answers = false;
+};
+
+int cmd_exam(const Registry& registry, const ExamOptions& o) {
+    const Algorithm& algorithm = find_algorithm(registry, o.id);
+    ExamProblem problem;
+    try {
+        problem = make_exam(algorithm, o.seed);
+    } catch (const InputError& e) {
+        throw UserError{"", e.what()};
+    }
+    if (o.format == "json") {
+        emit(pretty(exam_to_json(problem)) + "\n", o.out_path);
+        return 0;
+    }
+    std::string md = "# " + algorithm.spec->title + " — exam problem (seed " + std::to_string(o.seed) +
+                     ")\n\n" + problem.question + "\n";
+    if (o.answers) {
+        WorkedExample w = work(algorithm, problem, "seed " + std::to_string(o.seed));
+        std::string worked = worked_markdown(w);
+        // The worked example repeats the question; keep its solution and answer parts.
+        auto at = worked.find("**Input.**");
+        md += "\n" + (at == std::string::npos ? worked : worked.substr(at));
+    }
+    emit(md, o.out_path);
+    return 0;
+}
+
+int cmd_lessons(const Registry& registry, bool check) {
+    const LessonLibrary lessons = load_lesson_library(registry);
+    for (const Lesson& l : lessons.lessons)
+        std::cout << l.id << "\t" << l.topic << "\t" << l.title << "\t(exam: " << l.exam_weight << ")\n";
+    for (const std::string& e : lessons.errors) std::cerr << "cgsandbox: " << e << "\n";
+    return check && !lessons.errors.empty() ? kExitBadInput : 0;
+}
+
+struct RenderOptions {
+    std::string id, input_path, checkpoint_path, out_path, size = "800x600";
+    long long step = -1;  // -1: the end of the run
+    bool full_ui = false;
+};
+
+int cmd_render(const Registry& registry, const RenderOptions& o) {
+    Checkpoint c;
+    std::string source;
+    if (!o.checkpoint_path.empty()) {
+        source = source_name(o.checkpoint_path);
+        try {
+            c = checkpoint_from_json(parse_json(read_text_file(o.checkpoint_path)), registry);
+        } catch (const InputError& e) {
+            fail(source, e);
+        }
+        if (o.step >= 0) c.step = static_cast<std::size_t>(o.step);
+    } else {
+        if (o.id.empty()) throw UserError{"", "render needs an algorithm ID or --checkpoint FILE"};
+        const Algorithm& algorithm = find_algorithm(registry, o.id);
+        source = o.input_path.empty() ? "example input" : source_name(o.input_path);
+        c.algorithm = o.id;
+        c.input = load_input(algorithm, o.input_path);
+        c.step = o.step < 0 ? kMaxSteps : static_cast<std::size_t>(o.step);
+    }
+    int width = 0, height = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(o.size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || x != 'x' ||
+        width < 16 || height < 16 || width > 8192 || height > 8192)
+        throw UserError{"", "--size must be WxH with 16 <= W, H <= 8192, got \"" + o.size + "\""};
+    // Check the input before opening any window, so bad input is reported as such.
+    create_run(find_algorithm(registry, c.algorithm), c.input, source);
+    try {
+        viewer::render_png(registry, c, width, height, o.out_path, o.full_ui);
+    } catch (const InputError& e) {
+        fail(source, e);
+    } catch (const std::exception& e) {
+        std::cerr << "cgsandbox: render: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int cli_main(int argc, char** argv) {
+    const Registry registry = builtin_registry();
+    if (argc <= 1) return viewer::run_viewer(registry, std::nullopt);
+
+    CLI::App app{
+        "CG Sandbox: step through the algorithms of a computer-graphics course.\n"
+        "Without a command, opens the viewer."};
+    app.require_subcommand(0, 1);
+
+    auto* list = app.add_subcommand("list", "List the algorithms: id and title, one per line");
+
+    std::string id;
+    auto* example = app.add_subcommand("example", "Print a valid sample input as JSON");
+    example->add_option("ID", id, "Algorithm id (see `list`)")->required();
+
+    std::string input_path;
+    bool trace = false;
+    auto* run = app.add_subcommand(
+        "run", "Run to the end and print the result as one JSON object\n"
+               "(with --trace, first one JSON line per step)");
+    run->add_option("ID", id, "Algorithm id (see `list`)")->required();
+    run->add_option("--input,-i", input_path, "Input JSON file, or - for stdin (default: the example)");
+    run->add_flag("--trace,-t", trace, "Print each step: index, event, line, narration, variables");
+
+    RenderOptions ro;
+    auto* render = app.add_subcommand("render", "Save the viewer's picture of one step as PNG");
+    render->add_option("ID", ro.id, "Algorithm id (not needed with --checkpoint)");
+    render->add_option("--input,-i", ro.input_path, "Input JSON file, or - for stdin (default: the example)");
+    render->add_option("--checkpoint,-c", ro.checkpoint_path, "A checkpoint saved by the viewer");
+    render->add_option("--step,-s", ro.step, "Step to show (default: the end, or the checkpoint's)")
+        ->check(CLI::NonNegativeNumber);
+    render->add_option("--out,-o", ro.out_path, "Output PNG file")->required();
+    render->add_option("--size", ro.size, "Image size WxH (default 800x600)");
+    render->add_flag("--full", ro.full_ui, "The whole viewer window, not only the canvas");
+
+    WorkedOptions wo;
+    auto* worked = app.add_subcommand(
+        "worked", "Write the full worked solution: question, pseudocode, every step, answer");
+    worked->add_option("ID", wo.id, "Algorithm id (see `list`)")->required();
+    worked->add_option("--input,-i", wo.input_path, "Input JSON file, or - for stdin (default: the example)");
+    worked->add_option("--preset,-p", wo.preset, "A preset of the algorithm's lesson, by name");
+    worked->add_option("--format,-f", wo.format, "md (Markdown with LaTeX math) or json")
+        ->check(CLI::IsMember({"md", "json"}));
+    worked->add_option("--out,-o", wo.out_path, "Write to this file instead of stdout");
+
+    ExamOptions eo;
+    auto* exam = app.add_subcommand("exam", "An exam-style problem from a seed");
+    exam->add_option("ID", eo.id, "Algorithm id (see `list`)")->required();
+    exam->add_option("--seed,-s", eo.seed, "The problem's seed: same seed, same problem")->required();
+    exam->add_flag("--answers,-a", eo.answers, "Add the worked solution and the answers");
+    exam->add_option("--format,-f", eo.format,
+                     "md (the question, Markdown) or json ({question, input, answers, expected})")
+        ->check(CLI::IsMember({"md", "json"}));
+    exam->add_option("--out,-o", eo.out_path, "Write to this file instead of stdout");
+
+    bool check_lessons = false;
+    auto* lessons = app.add_subcommand("lessons", "List the lessons in course order; report broken files");
+    lessons->add_flag("--check", check_lessons, "Exit 2 if any lesson file is broken");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "cgsandbox: " << e.what() << " (see --help)\n";
+        return kExitBadInput;
+    }
+
+    try {
+        if (*list) return cmd_list(registry);
+        if (*example) return cmd_example(registry, id);
+        if (*run) return cmd_run(registry, id, input_path, trace);
+        if (*render) return cmd_render(registry, ro);
+        if (*worked) return cmd_worked(registry, wo);
+        if (*exam) return cmd_exam(registry, eo);
+        if (*lessons) return cmd_lessons(registry, check_lessons);
+        return viewer::run_viewer(registry, std::nullopt);
+    } catch (const UserError& e) {
+        std::cerr << "cgsandbox: " << (e.source.empty() ? "" : e.source + ": ") << e.message << "\n";
+        return kExitBadInput;
+    }
+}
+
+}  // namespace cg

@@ -1,0 +1,240 @@
+// Sections: [view fitting] [interaction] [caption] [draw_canvas].
+#include "viewer/canvas.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <glm/common.hpp>
+#include <limits>
+#include <string>
+
+#include "core/format.hpp"
+#include "viewer/canvas_draw.hpp"
+#include "viewer/im_colour.hpp"
+#include "viewer/palette.hpp"
+
+namespace cg::viewer {
+
+// --- [view fitting] --------------------------------------------------------------------------
+
+View2 fit_view(const Scene& scene, glm::dvec2 size) {
+    const double inf = std::numeric_limits<double>::infinity();
+    glm::dvec2 lo{inf, inf}, hi{-inf, -inf};
+    auto add = [&](glm::dvec2 p) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    };
+    for (const Polygon2& poly : scene.polygons)
+        for (glm::dvec2 p : poly.points) add(p);
+    for (const Segment2& s : scene.segments) add(s.a), add(s.b);
+    for (const Point2& p : scene.points) add(p.p);
+    for (const Label2& l : scene.labels) add(l.p);
+    for (const Handle2& h : scene.handles) add(h.p);
+    if (lo.x > hi.x) return View2{};  // nothing bounded: the origin at the default zoom
+
+    // Margins in pixels: room for labels beside the geometry, and for the caption on top.
+    constexpr double kSide = 60, kTop = 80, kBottom = 45;
+    const glm::dvec2 room{std::max(size.x - 2 * kSide, 40.0),
+                          std::max(size.y - kTop - kBottom, 40.0)};
+    const glm::dvec2 extent = hi - lo;
+    double zoom = 50;
+    if (extent.x > 0 || extent.y > 0)
+        zoom = std::min(extent.x > 0 ? room.x / extent.x : inf,
+                        extent.y > 0 ? room.y / extent.y : inf);
+    zoom = std::clamp(zoom, 1e-9, 1e9);
+    // Centre the geometry in the room left between the margins (the caption's is larger).
+    glm::dvec2 centre = (lo + hi) / 2.0;
+    centre.y += (kTop - kBottom) / 2 / zoom;
+    return View2{centre, zoom};
+}
+
+// --- [interaction] ---------------------------------------------------------------------------
+
+namespace {
+
+constexpr double kGrabPixels = 9;  // how near the mouse must be to pick a handle up
+
+int handle_under(const Scene& scene, const ScreenMap& map, glm::dvec2 mouse) {
+    int best = -1;
+    double best_distance = kGrabPixels;
+    for (std::size_t i = 0; i < scene.handles.size(); ++i) {
+        const glm::dvec2 d = map.to_screen(scene.handles[i].p) - mouse;
+        const double distance = std::max(std::abs(d.x), std::abs(d.y));
+        if (distance <= best_distance) best = static_cast<int>(i), best_distance = distance;
+    }
+    return best;
+}
+
+// Rounds to `step` and then to the decimal digits that step has, so the input gets 2.3 and
+// not 2.3000000000000003.
+double snap(double v, double step) {
+    const int digits = std::clamp(static_cast<int>(-std::floor(std::log10(step))), 0, 15);
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, std::round(v / step) * step);
+    return std::strtod(text, nullptr);
+}
+
+// Writes a number at a JSON pointer that must already exist; whole numbers stay integers.
+bool set_number(json& input, const std::string& pointer, double v) {
+    try {
+        json& field = input.at(json::json_pointer(pointer));
+        if (v == std::floor(v) && std::abs(v) < 1e15)
+            field = static_cast<long long>(v);
+        else
+            field = v;
+        return true;
+    } catch (const json::exception&) {
+        return false;
+    }
+}
+
+void drag_handle(Session& s, const Handle2& handle, glm::dvec2 target, double zoom) {
+    const double step = nice_step(5 / zoom);  // a few pixels: round numbers at any zoom
+    json edited = s.input;
+    if (!set_number(edited, handle.x_field, snap(target.x, step)) ||
+        !set_number(edited, handle.y_field, snap(target.y, step))) {
+        s.set_status("cannot move " + handle.name + ": its input fields " + handle.x_field + ", " +
+                         handle.y_field + " do not exist",
+                     true);
+        s.canvas.dragged_handle = -1;
+        return;
+    }
+    if (edited != s.input) s.edit(std::move(edited));  // same step, new input
+}
+
+void zoom_at(View2& view, const ScreenMap& map, glm::dvec2 mouse, float wheel) {
+    const glm::dvec2 before = map.to_world(mouse);
+    view.zoom = std::clamp(view.zoom * std::pow(1.2, wheel), 1e-9, 1e9);
+    const glm::dvec2 after = ScreenMap{map.canvas, view}.to_world(mouse);
+    view.center += before - after;  // the point under the mouse stays put
+}
+
+// Returns the handle to highlight (hovered or dragged), or -1.
+int interact(Session& s, const Scene& scene, const ScreenMap& map) {
+    CanvasState& c = s.canvas;
+    ImGui::SetCursorScreenPos(im(map.canvas.min));
+    ImGui::InvisibleButton("canvas", im(map.canvas.max - map.canvas.min),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    const ImGuiIO& io = ImGui::GetIO();
+    const glm::dvec2 mouse = dv(io.MousePos);
+    const bool hovered = ImGui::IsItemHovered();
+
+    if (!ImGui::IsItemActive()) c.dragged_handle = -1, c.panning = false;
+    int hot = c.dragged_handle;
+    if (hot < 0 && hovered && !c.panning) hot = handle_under(scene, map, mouse);
+    if (ImGui::IsItemActivated()) {
+        // The left button on a handle drags it; any other press pans.
+        if (io.MouseClicked[ImGuiMouseButton_Left] && hot >= 0) {
+            c.dragged_handle = hot;
+            c.grab_offset = scene.handles[hot].p - map.to_world(mouse);
+        } else {
+            c.panning = true;
+        }
+    }
+
+    if (c.dragged_handle >= 0 && c.dragged_handle < static_cast<int>(scene.handles.size())) {
+        drag_handle(s, scene.handles[c.dragged_handle], map.to_world(mouse) + c.grab_offset,
+                    map.view.zoom);
+    } else if (c.panning) {
+        c.view.center.x -= io.MouseDelta.x / c.view.zoom;
+        c.view.center.y += io.MouseDelta.y / c.view.zoom;
+    }
+    if (hovered && io.MouseWheel != 0) zoom_at(c.view, map, mouse, io.MouseWheel);
+
+    if (hot >= 0 && hot < static_cast<int>(scene.handles.size())) {
+        ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+        const Handle2& h = scene.handles[hot];
+        ImGui::SetTooltip("%s  %s", h.name.c_str(), num(h.p).c_str());
+    } else if (c.panning) {
+        ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeAll);
+    }
+    return hot;
+}
+
+// --- [caption] -------------------------------------------------------------------------------
+
+// What the picture shows, in its top-left corner, so that a saved PNG explains itself; in the
+// window also how to use the canvas.
+struct Caption {
+    std::string title, detail, hint;
+    Box box;
+};
+
+Caption make_caption(const ScreenMap& map, const Session& s, bool interactive) {
+    Caption c;
+    if (!s.algorithm) return c;
+    c.title = s.algorithm->spec->title;
+    const std::optional<std::size_t> n = s.length();
+    c.detail = "step " + std::to_string(s.index()) + " / " + (n ? std::to_string(*n) : "?");
+    if (const StepInfo* info = s.last_step(); info && !info->event.empty())
+        c.detail += "  ·  " + info->event;
+    if (!s.input_error.empty()) c.detail += "  ·  input refused: showing the last good run";
+    if (interactive) c.hint = "wheel: zoom  ·  right-drag: pan  ·  drag ■ to edit the input";
+
+    const Fonts& f = s.fonts;
+    double width = f.ui->CalcTextSizeA(f.ui->FontSize, FLT_MAX, 0, c.title.c_str()).x;
+    double height = f.ui->FontSize + 12;
+    for (const std::string* line : {&c.detail, &c.hint}) {
+        if (line->empty()) continue;
+        width = std::max<double>(
+            width, f.small->CalcTextSizeA(f.small->FontSize, FLT_MAX, 0, line->c_str()).x);
+        height += f.small->FontSize + 2;
+    }
+    c.box.min = map.canvas.min + glm::dvec2(10, 10);
+    c.box.max = c.box.min + glm::dvec2(width + 16, height);
+    return c;
+}
+
+void draw_caption(ImDrawList* dl, const Caption& c, const Fonts& f) {
+    if (c.title.empty()) return;
+    dl->AddRectFilled(im(c.box.min), im(c.box.max), IM_COL32(255, 255, 255, 230), 4.0f);
+    dl->AddRect(im(c.box.min), im(c.box.max), IM_COL32(0, 0, 0, 40), 4.0f);
+    glm::dvec2 at = c.box.min + glm::dvec2(8, 5);
+    dl->AddText(f.ui, f.ui->FontSize, im(at), im_colour(kCaptionText), c.title.c_str());
+    at.y += f.ui->FontSize + 2;
+    dl->AddText(f.small, f.small->FontSize, im(at), im_colour(kTickLabel), c.detail.c_str());
+    at.y += f.small->FontSize + 2;
+    if (!c.hint.empty())
+        dl->AddText(f.small, f.small->FontSize, im(at), im_colour(kHintText), c.hint.c_str());
+}
+
+}  // namespace
+
+// --- [draw_canvas] ---------------------------------------------------------------------------
+
+void draw_canvas(Session& s, bool interactive) {
+    const glm::dvec2 origin = dv(ImGui::GetCursorScreenPos());
+    const glm::dvec2 size = glm::max(dv(ImGui::GetContentRegionAvail()), glm::dvec2(1, 1));
+    Scene scene = s.scene();
+    if (s.canvas.fit_pending && size.x > 16 && size.y > 16) {
+        s.canvas.view = fit_view(scene, size);
+        s.canvas.fit_pending = false;
+    }
+    ScreenMap map{{origin, origin + size}, s.canvas.view};
+    int hot = -1;
+    if (interactive) {
+        hot = interact(s, scene, map);
+        scene = s.scene();  // a dragged handle may have restarted the run
+        map.view = s.canvas.view;
+        if (hot >= static_cast<int>(scene.handles.size())) hot = -1;
+    }
+
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->PushClipRect(im(map.canvas.min), im(map.canvas.max), true);
+    dl->AddRectFilled(im(map.canvas.min), im(map.canvas.max), im_colour(kCanvasBackground));
+    draw_grid(dl, map, s.fonts);
+    const Caption caption = make_caption(map, s, interactive);
+    draw_scene(dl, map, scene, s.fonts, hot, {caption.box.grown(4)});
+    draw_caption(dl, caption, s.fonts);
+    if (!s.timeline) {
+        const char* text = "Nothing to show: the input was refused (see the Input panel).";
+        const glm::dvec2 at = map.centre() - glm::dvec2(200, 10);
+        dl->AddText(s.fonts.ui, s.fonts.ui->FontSize, im(at), im_colour(kErrorText), text);
+    }
+    dl->PopClipRect();
+}
+
+}  // namespace cg::viewer

@@ -1,0 +1,60 @@
+// Drawing a cg::Scene into an ImGui draw list: the world-to-screen mapping, the grid with its
+// axes, and the scene's primitives. Nothing here knows about any algorithm or handles input;
+// canvas.cpp does the interaction and calls these.
+#pragma once
+
+#include <imgui.h>
+
+#include <glm/vec2.hpp>
+#include <vector>
+
+#include "checkpoint.hpp"
+#include "core/scene.hpp"
+#include "viewer/fonts.hpp"
+#include "viewer/geometry.hpp"
+
+namespace cg::viewer {
+
+// World coordinates are y up; the screen's are y down. The view's centre is at the canvas's
+// centre, and `zoom` is pixels per world unit.
+struct ScreenMap {
+    Box canvas;  // in screen pixels
+    View2 view;
+
+    glm::dvec2 centre() const { return (canvas.min + canvas.max) * 0.5; }
+    glm::dvec2 to_screen(glm::dvec2 w) const {
+        const glm::dvec2 c = centre();
+        return {c.x + (w.x - view.center.x) * view.zoom, c.y - (w.y - view.center.y) * view.zoom};
+    }
+    glm::dvec2 to_world(glm::dvec2 s) const {
+        const glm::dvec2 c = centre();
+        return {view.center.x + (s.x - c.x) / view.zoom, view.center.y - (s.y - c.y) / view.zoom};
+    }
+};
+
+inline ImVec2 im(glm::dvec2 p) {
+    return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y));
+}
+inline glm::dvec2 dv(ImVec2 p) {
+    return {p.x, p.y};
+}
+
+// The smallest of 1, 2, 5 × 10^k that is at least `at_least` (> 0): grid spacings and
+// drag snapping read as round numbers.
+double nice_step(double at_least);
+
+// A view showing all of the scene's bounded geometry (half-planes are infinite and don't
+// count) in a canvas of `size` pixels, with room for labels and the caption.
+View2 fit_view(const Scene& scene, glm::dvec2 size);
+
+// Grid lines every round step (at least ~70 px apart, with lighter subdivisions), the axes,
+// and tick labels kept inside the canvas when an axis is out of view.
+void draw_grid(ImDrawList* dl, const ScreenMap& map, const Fonts& fonts);
+
+// The scene, bottom to top: half-planes, polygons, segments, points, handles, then all
+// labels, placed to avoid each other, the geometry and the `keep_clear` boxes (the caption).
+// `hot_handle` is the handle hovered or dragged, or -1.
+void draw_scene(ImDrawList* dl, const ScreenMap& map, const Scene& scene, const Fonts& fonts,
+                int hot_handle, const std::vector<Box>& keep_clear);
+
+}  // namespace cg::viewer

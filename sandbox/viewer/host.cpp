@@ -1,0 +1,105 @@
+#include "viewer/host.hpp"
+
+#include <backends/imgui_impl_opengl3.h>
+#include <backends/imgui_impl_sdl.h>
+#include <imgui.h>
+
+#include <cstdlib>
+#include <cstring>
+
+namespace cg::viewer {
+
+namespace {
+
+bool has_env(const char* name) {
+    const char* v = std::getenv(name);
+    return v && *v;
+}
+
+// Where SDL should draw. Without any display SDL 2.26 quietly falls back to its "offscreen"
+// driver: right for `render` (it draws through EGL, no X server needed), but a viewer window
+// there would be invisible, so the viewer reports that there is no display instead. An
+// explicit SDL_VIDEODRIVER is always respected.
+void choose_video_driver(GuiHost::Mode mode) {
+    if (has_env("SDL_VIDEODRIVER") || has_env("WAYLAND_DISPLAY")) return;
+    if (has_env("DISPLAY")) {
+        SDL_SetHint(SDL_HINT_VIDEODRIVER, "x11");  // an unreachable X server is then an error
+        return;
+    }
+    if (mode == GuiHost::Mode::Window)
+        throw NoDisplay("neither DISPLAY nor WAYLAND_DISPLAY is set");
+    SDL_SetHint(SDL_HINT_VIDEODRIVER, "offscreen");  // also skips noisy probes of the others
+}
+
+bool invisible_driver() {
+    const char* driver = SDL_GetCurrentVideoDriver();
+    return driver && (std::strcmp(driver, "offscreen") == 0 || std::strcmp(driver, "dummy") == 0);
+}
+
+}  // namespace
+
+GuiHost::GuiHost(const char* title, int width, int height, Mode mode) {
+    try {
+        // `render` is a command-line tool: Ctrl-C should end it, not become an SDL event.
+        if (mode == Mode::Offscreen) SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+        choose_video_driver(mode);
+        if (SDL_Init(SDL_INIT_VIDEO) != 0) throw NoDisplay(SDL_GetError());
+        sdl_ = true;
+        if (mode == Mode::Window && !has_env("SDL_VIDEODRIVER") && invisible_driver())
+            throw NoDisplay(
+                "cannot open the display" +
+                std::string(has_env("DISPLAY") ? std::string(" ") + std::getenv("DISPLAY") : ""));
+
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+        SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+        Uint32 flags = SDL_WINDOW_OPENGL |
+                       (mode == Mode::Window ? SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI
+                                             : SDL_WINDOW_HIDDEN);
+        window_ = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width,
+                                   height, flags);
+        if (!window_) throw NoDisplay(SDL_GetError());
+        context_ = SDL_GL_CreateContext(window_);
+        if (!context_) throw NoDisplay(SDL_GetError());
+        SDL_GL_MakeCurrent(window_, context_);
+        if (mode == Mode::Window) SDL_GL_SetSwapInterval(1);  // vsync: 60 fps, no busy loop
+        gl_ = Gl::load();
+
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        imgui_ = true;
+        ImGui::GetIO().IniFilename = nullptr;  // the layout is computed, nothing to remember
+        ImGui::GetIO().LogFilename = nullptr;
+        fonts_ = setup_fonts_and_style();
+        if (mode == Mode::Window) {
+            if (!ImGui_ImplSDL2_InitForOpenGL(window_, context_))
+                throw std::runtime_error("cannot start ImGui's SDL backend");
+            sdl_backend_ = true;
+        }
+        if (!ImGui_ImplOpenGL3_Init("#version 330 core"))
+            throw std::runtime_error("cannot start ImGui's OpenGL backend");
+        gl_backend_ = true;
+    } catch (...) {
+        teardown();
+        throw;
+    }
+}
+
+GuiHost::~GuiHost() {
+    teardown();
+}
+
+void GuiHost::teardown() {
+    if (gl_backend_) ImGui_ImplOpenGL3_Shutdown();
+    if (sdl_backend_) ImGui_ImplSDL2_Shutdown();
+    if (imgui_) ImGui::DestroyContext();
+    if (context_) SDL_GL_DeleteContext(context_);
+    if (window_) SDL_DestroyWindow(window_);
+    if (sdl_) SDL_Quit();
+    gl_backend_ = sdl_backend_ = imgui_ = sdl_ = false;
+    context_ = nullptr;
+    window_ = nullptr;
+}
+
+}  // namespace cg::viewer

@@ -1,0 +1,14 @@
+// A generic editor for an algorithm's JSON input: the viewer knows no input format, so it
+// walks whatever JSON the algorithm's example has.
+#pragma once
+
+#include "io/json.hpp"
+
+namespace cg::viewer {
+
+// Widgets for each field of `object` (objects become tree nodes, numbers InputDouble, short
+// arrays of numbers one inline row, longer arrays a list with + and − buttons). Returns true
+// when something changed this frame.
+bool edit_json_fields(json& object);
+
+}  // namespace cg::viewer

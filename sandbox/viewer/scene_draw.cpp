@@ -1,0 +1,264 @@
+// A cg::Scene as ImDrawList calls. Sections: [strokes and fills] [primitives] [labels]
+// [draw_scene].
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "viewer/canvas_draw.hpp"
+#include "viewer/im_colour.hpp"
+#include "viewer/labels.hpp"
+#include "viewer/palette.hpp"
+
+namespace cg::viewer {
+
+namespace {
+
+// Geometry may reach this far outside the canvas before it is clipped, so that zooming far
+// in keeps float coordinates and ImGui's vertex buffers sane.
+constexpr double kSafeMargin = 2000;
+
+struct Pen {
+    ImU32 colour;
+    float width;
+    bool dashed;
+};
+
+Pen pen_of(const Style& style) {
+    return {im_colour(style_rgba(style)), std::clamp(style.width, 0.5f, 20.0f), style.dashed};
+}
+
+// A label waiting for a place: drawn last, over all geometry.
+struct PendingLabel {
+    int priority;  // lower is placed first and so gets the better spot
+    std::string text;
+    std::uint32_t rgba;
+    std::vector<glm::dvec2> corners;  // candidate top-left corners, best first
+};
+
+// Everything draw_scene's parts share.
+struct Painter {
+    ImDrawList* dl;
+    const ScreenMap& map;
+    const Fonts& fonts;
+    Box safe;
+    LabelPlacer placer;
+    std::vector<PendingLabel> labels;
+
+    glm::dvec2 text_size(const std::string& text) const {
+        const ImVec2 s = fonts.ui->CalcTextSizeA(fonts.ui->FontSize, FLT_MAX, 0, text.c_str());
+        return {s.x + 6, s.y + 2};  // with the halo's padding
+    }
+};
+
+// --- [strokes and fills] ---------------------------------------------------------------------
+
+void dashed_polyline(ImDrawList* dl, const std::vector<glm::dvec2>& pts, bool closed,
+                     const Pen& pen) {
+    const double dash = 4 + 2.5 * pen.width, period = dash + 3 + 1.5 * pen.width;
+    double phase = 0;  // carried across corners so the pattern flows around them
+    const std::size_t edges = closed ? pts.size() : pts.size() - 1;
+    for (std::size_t i = 0; i < edges; ++i) {
+        const glm::dvec2 a = pts[i], b = pts[(i + 1) % pts.size()];
+        const double length = glm::length(b - a);
+        if (length == 0) continue;
+        const glm::dvec2 dir = (b - a) / length;
+        for (double t = 0; t < length;) {
+            const bool on = phase < dash;
+            const double run = std::min((on ? dash : period) - phase, length - t);
+            if (on) dl->AddLine(im(a + dir * t), im(a + dir * (t + run)), pen.colour, pen.width);
+            t += run;
+            phase = std::fmod(phase + run, period);
+        }
+    }
+}
+
+void stroke(Painter& p, const std::vector<glm::dvec2>& screen, bool closed, const Pen& pen) {
+    if (screen.size() < 2) return;
+    const bool safe =
+        std::all_of(screen.begin(), screen.end(), [&](glm::dvec2 q) { return p.safe.contains(q); });
+    if (safe) {
+        if (pen.dashed) return dashed_polyline(p.dl, screen, closed, pen);
+        std::vector<ImVec2> pts;
+        for (glm::dvec2 q : screen) pts.push_back(im(q));
+        p.dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), pen.colour,
+                          closed ? ImDrawFlags_Closed : ImDrawFlags_None, pen.width);
+        return;
+    }
+    const std::size_t edges = closed ? screen.size() : screen.size() - 1;
+    for (std::size_t i = 0; i < edges; ++i)
+        if (auto s = clip_segment(screen[i], screen[(i + 1) % screen.size()], p.safe)) {
+            if (pen.dashed)
+                dashed_polyline(p.dl, {s->first, s->second}, false, pen);
+            else
+                p.dl->AddLine(im(s->first), im(s->second), pen.colour, pen.width);
+        }
+}
+
+// Fills any simple polygon, concave too, as triangles without an anti-aliased fringe: the
+// outline drawn over it gives the smooth edge, and shared triangle edges leave no seams.
+void fill(Painter& p, std::vector<glm::dvec2> screen, ImU32 colour) {
+    if (!std::all_of(screen.begin(), screen.end(),
+                     [&](glm::dvec2 q) { return p.safe.contains(q); }))
+        screen = clip_polygon_to_box(std::move(screen), p.safe);
+    if (screen.size() < 3 || screen.size() > 60000) return;  // 16-bit indices
+    const std::vector<int> triangles = triangulate(screen);
+    ImDrawList* dl = p.dl;
+    dl->PrimReserve(static_cast<int>(triangles.size()), static_cast<int>(screen.size()));
+    const ImDrawIdx base = static_cast<ImDrawIdx>(dl->_VtxCurrentIdx);
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();  // untextured: the atlas's white texel
+    for (glm::dvec2 q : screen) dl->PrimWriteVtx(im(q), uv, colour);
+    for (int i : triangles) dl->PrimWriteIdx(static_cast<ImDrawIdx>(base + i));
+}
+
+std::vector<glm::dvec2> to_screen(const ScreenMap& map, const std::vector<glm::dvec2>& world) {
+    std::vector<glm::dvec2> out;
+    out.reserve(world.size());
+    for (glm::dvec2 w : world) out.push_back(map.to_screen(w));
+    return out;
+}
+
+// --- [primitives] ----------------------------------------------------------------------------
+
+void draw_half_plane(Painter& p, const HalfPlane2& h) {
+    if (h.inward.x == 0 && h.inward.y == 0) return;
+    const Box& c = p.map.canvas;
+    const Box view{p.map.to_world({c.min.x, c.max.y}), p.map.to_world({c.max.x, c.min.y})};
+    const std::uint32_t rgba = style_rgba(h.style);
+
+    // Shade the outside: the visible rectangle cut down to (x - point) . (-inward) >= 0.
+    const std::vector<glm::dvec2> corners{
+        view.min, {view.max.x, view.min.y}, view.max, {view.min.x, view.max.y}};
+    fill(p, to_screen(p.map, clip_polygon(corners, h.point, -h.inward)),
+         im_colour(with_alpha(rgba, kOutsideShadeAlpha)));
+
+    const auto line = clip_line(h.point, {-h.inward.y, h.inward.x}, view);
+    if (!line) return;
+    const glm::dvec2 a = p.map.to_screen(line->first), b = p.map.to_screen(line->second);
+    stroke(p, {a, b}, false, pen_of(h.style));
+    p.placer.avoid_segment(a, b);
+    if (h.label.empty()) return;
+
+    // The label sits just outside the line, near its top (or right) end, where it is least
+    // likely to cover the scene; a few places along the line are the fallbacks.
+    const bool a_first = std::abs(b.y - a.y) > std::abs(b.x - a.x) ? a.y < b.y : a.x > b.x;
+    const glm::dvec2 from = a_first ? a : b, to = a_first ? b : a;
+    glm::dvec2 out = glm::normalize(glm::dvec2(-h.inward.x, h.inward.y));  // screen is y down
+    const glm::dvec2 size = p.text_size(h.label);
+    PendingLabel label{3, h.label, darker(rgba, 0.8f), {}};
+    for (double side : {1.0, -1.0}) {
+        const glm::dvec2 n = out * side;
+        const double reach = 6 + std::abs(n.x) * size.x / 2 + std::abs(n.y) * size.y / 2;
+        for (double t : {0.08, 0.25, 0.5, 0.75, 0.92}) {
+            const glm::dvec2 centre = from + (to - from) * t + n * reach;
+            label.corners.push_back(centre - size / 2.0);
+        }
+    }
+    p.labels.push_back(std::move(label));
+}
+
+void draw_polygon(Painter& p, const Polygon2& poly) {
+    const std::vector<glm::dvec2> screen = to_screen(p.map, poly.points);
+    const std::uint32_t rgba = style_rgba(poly.style);
+    // An explicit colour with its own alpha is the fill as given; a role fills faintly.
+    if (poly.filled)
+        fill(p, screen,
+             im_colour(poly.style.rgba != 0 && (poly.style.rgba & 0xffu) != 0xffu
+                           ? rgba
+                           : with_alpha(rgba, kFillAlpha)));
+    stroke(p, screen, poly.closed, pen_of(poly.style));
+    const std::size_t edges = poly.closed ? screen.size() : screen.size() - 1;
+    for (std::size_t i = 0; i < edges && screen.size() > 1; ++i)
+        p.placer.avoid_segment(screen[i], screen[(i + 1) % screen.size()]);
+}
+
+void draw_segment(Painter& p, const Segment2& s) {
+    const glm::dvec2 a = p.map.to_screen(s.a), b = p.map.to_screen(s.b);
+    const Pen pen = pen_of(s.style);
+    const double length = glm::length(b - a);
+    if (s.arrow && length > 1) {
+        // The head's size grows with the line, but never past half the segment.
+        const double head = std::min(7.0 + 3.0 * pen.width, length / 2);
+        const glm::dvec2 dir = (b - a) / length, side{-dir.y, dir.x};
+        const glm::dvec2 base = b - dir * head;
+        stroke(p, {a, b - dir * head * 0.7}, false, pen);
+        const double half = head * 0.45;
+        p.dl->AddTriangleFilled(im(b), im(base + side * half), im(base - side * half), pen.colour);
+    } else {
+        stroke(p, {a, b}, false, pen);
+    }
+    p.placer.avoid_segment(a, b);
+    if (!s.label.empty()) {
+        const glm::dvec2 mid = (a + b) / 2.0;
+        p.labels.push_back({2, s.label, darker(style_rgba(s.style), 0.8f),
+                            LabelPlacer::around(mid, p.text_size(s.label), 8)});
+    }
+}
+
+void draw_point(Painter& p, const Point2& pt) {
+    const glm::dvec2 c = p.map.to_screen(pt.p);
+    if (!p.safe.contains(c)) return;
+    const float r = std::clamp(pt.radius, 1.0f, 30.0f);
+    const std::uint32_t rgba = style_rgba(pt.style);
+    p.dl->AddCircleFilled(im(c), r + 1.5f, IM_COL32_WHITE);  // the outline keeps it off lines
+    p.dl->AddCircleFilled(im(c), r, im_colour(rgba));
+    p.placer.avoid_box({c - glm::dvec2(r), c + glm::dvec2(r)});
+    if (!pt.label.empty())
+        p.labels.push_back({0, pt.label, darker(rgba, 0.8f),
+                            LabelPlacer::around(c, p.text_size(pt.label), r + 5)});
+}
+
+void draw_handle(Painter& p, const Handle2& h, bool hot) {
+    const glm::dvec2 c = p.map.to_screen(h.p);
+    if (!p.safe.contains(c)) return;
+    // A hollow square, so the point or arrowhead usually sitting at a handle stays visible.
+    const double half = hot ? 7.0 : 5.0;
+    const ImVec2 lo = im(c - glm::dvec2(half)), hi = im(c + glm::dvec2(half));
+    if (hot) p.dl->AddRectFilled(lo, hi, im_colour(with_alpha(kHandleHover, 0x90)));
+    p.dl->AddRect(lo, hi, im_colour(kHandleHalo), 0, 0, 3.0f);
+    p.dl->AddRect(lo, hi, im_colour(hot ? darker(kHandleHover, 0.8f) : kHandleOutline), 0, 0, 1.5f);
+    p.placer.avoid_box({c - glm::dvec2(half), c + glm::dvec2(half)});
+}
+
+// --- [labels] --------------------------------------------------------------------------------
+
+void draw_labels(Painter& p) {
+    std::stable_sort(
+        p.labels.begin(), p.labels.end(),
+        [](const PendingLabel& a, const PendingLabel& b) { return a.priority < b.priority; });
+    const float size = p.fonts.ui->FontSize;
+    for (const PendingLabel& l : p.labels) {
+        if (l.corners.empty()) continue;
+        const Box box = p.placer.place(p.text_size(l.text), l.corners);
+        p.dl->AddRectFilled(im(box.min), im(box.max), im_colour(kLabelHalo), 3.0f);
+        p.dl->AddText(p.fonts.ui, size, im(box.min + glm::dvec2(3, 1)), im_colour(l.rgba),
+                      l.text.c_str());
+    }
+}
+
+}  // namespace
+
+// --- [draw_scene] ----------------------------------------------------------------------------
+
+void draw_scene(ImDrawList* dl, const ScreenMap& map, const Scene& scene, const Fonts& fonts,
+                int hot_handle, const std::vector<Box>& keep_clear) {
+    Painter p{dl, map, fonts, map.canvas.grown(kSafeMargin), LabelPlacer(map.canvas), {}};
+    for (const Box& b : keep_clear) p.placer.keep_clear(b);
+    for (const HalfPlane2& h : scene.half_planes) draw_half_plane(p, h);
+    for (const Polygon2& poly : scene.polygons) draw_polygon(p, poly);
+    for (const Segment2& s : scene.segments) draw_segment(p, s);
+    for (const Point2& pt : scene.points) draw_point(p, pt);
+    for (std::size_t i = 0; i < scene.handles.size(); ++i)
+        draw_handle(p, scene.handles[i], static_cast<int>(i) == hot_handle);
+    for (const Label2& l : scene.labels) {
+        if (l.text.empty()) continue;
+        const glm::dvec2 at = map.to_screen(l.p);
+        p.labels.push_back({1, l.text, darker(style_rgba(l.style), 0.8f),
+                            LabelPlacer::around(at, p.text_size(l.text), 9)});
+    }
+    draw_labels(p);
+}
+
+}  // namespace cg::viewer

@@ -1,0 +1,201 @@
+#include "viewer/session.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace cg::viewer {
+
+namespace {
+
+// Steps a copy of a fresh run to its end without narration (cheap), so the step counter can
+// say "k / n" from the start; gives up on long or slow runs, which then show "k / ?".
+std::optional<std::size_t> probe_length(const Run& fresh, double max_seconds) {
+    constexpr std::size_t kMaxSteps = 1'000'000;
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(max_seconds));
+    std::unique_ptr<Run> run = fresh.clone();
+    for (std::size_t n = 0; n <= kMaxSteps; ++n) {
+        if (run->done()) return n;
+        if (n % 256 == 0 && std::chrono::steady_clock::now() > deadline) break;
+        run->step(nullptr);
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+// --- starting runs ---------------------------------------------------------------------------
+
+void Session::start(const Algorithm& a, json in, std::size_t step) {
+    std::unique_ptr<Run> run = a.create(in);  // may throw: nothing has changed yet
+    std::optional<std::size_t> length = probe_length(*run, probe_seconds);
+    if (&a != algorithm) {
+        breakpoints.clear();
+        playing = false;
+        canvas.fit_pending = true;
+        canvas.dragged_handle = -1;
+        followed_line = 0;
+        followed_event.clear();
+    }
+    algorithm = &a;
+    input = std::move(in);
+    input_error.clear();
+    timeline = std::make_unique<Timeline>(std::move(run));
+    timeline->jump(step);
+    probed_length = length;
+    ++run_id;
+    if (timeline->at_end()) playing = false;
+}
+
+bool Session::try_start(const Algorithm& a, json in, std::size_t step) {
+    std::string error;
+    try {
+        start(a, in, step);
+        return true;
+    } catch (const InputError& e) {
+        error = e.what();
+    } catch (const std::exception& e) {  // a JSON type error slipping past the reader
+        error = e.what();
+    }
+    if (&a != algorithm) {  // a refused input of another algorithm: nothing to show
+        algorithm = &a;
+        timeline.reset();
+        probed_length.reset();
+        breakpoints.clear();
+        playing = false;
+        canvas.fit_pending = true;
+        canvas.dragged_handle = -1;
+        ++run_id;
+    }
+    input = std::move(in);
+    input_error = std::move(error);
+    return false;
+}
+
+void Session::choose(const Algorithm& a) {
+    try_start(a, a.example(), 0);
+    canvas.fit_pending = true;
+}
+
+void Session::load(const Checkpoint& c) {
+    const Algorithm* a = registry.find(c.algorithm);
+    if (!a) {
+        set_status("unknown algorithm \"" + c.algorithm + "\"", true);
+        return;
+    }
+    try_start(*a, c.input, c.step);
+    canvas.fit_pending = !c.view;
+    if (c.view) canvas.view = *c.view;
+}
+
+bool Session::edit(json edited) {
+    if (!algorithm) return false;
+    return try_start(*algorithm, std::move(edited), index());
+}
+
+Checkpoint Session::checkpoint() const {
+    Checkpoint c;
+    c.algorithm = algorithm ? algorithm->spec->id : "";
+    c.input = input;
+    c.step = index();
+    if (!canvas.fit_pending) c.view = canvas.view;
+    return c;
+}
+
+// --- where we are ----------------------------------------------------------------------------
+
+std::optional<std::size_t> Session::length() const {
+    if (!timeline) return std::nullopt;
+    if (timeline->length()) return timeline->length();
+    return probed_length;
+}
+
+Scene Session::scene() const {
+    Scene scene;
+    if (timeline) timeline->current().draw(scene);
+    return scene;
+}
+
+const NarrationLog& Session::log() {
+    if (log_.run == run_id && log_.index == index()) return log_;
+    log_.run = run_id;
+    log_.index = index();
+    log_.first =
+        log_.index > NarrationLog::kMaxEntries ? log_.index - NarrationLog::kMaxEntries + 1 : 1;
+    log_.steps.clear();
+    if (timeline && log_.index > 0) log_.steps = timeline->steps(log_.first, log_.index);
+    return log_;
+}
+
+// --- moving ----------------------------------------------------------------------------------
+
+bool Session::on_breakpoint() {
+    const StepInfo* info = last_step();
+    if (!info || !breakpoints.count(info->line)) return false;
+    set_status("Paused at the breakpoint on line " + std::to_string(info->line) + ".", false);
+    return true;
+}
+
+void Session::step_forward() {
+    playing = false;
+    if (timeline) timeline->forward();
+}
+
+void Session::step_back() {
+    playing = false;
+    if (timeline) timeline->back();
+}
+
+void Session::reset() {
+    playing = false;
+    if (timeline) timeline->reset();
+}
+
+void Session::jump(std::size_t step) {
+    playing = false;
+    if (timeline) timeline->jump(step);
+}
+
+void Session::run_to_end() {
+    playing = false;
+    if (!timeline) return;
+    if (breakpoints.empty()) {
+        timeline->to_end();
+        return;
+    }
+    // One step at a time only to look at each line; still instant, not one step per frame.
+    while (timeline->forward())
+        if (on_breakpoint()) return;
+}
+
+void Session::toggle_play() {
+    if (playing || !timeline) {
+        playing = false;
+        return;
+    }
+    if (timeline->at_end()) timeline->reset();
+    playing = true;
+    play_clock = 1;  // the first step comes at once, so Play visibly responds
+}
+
+void Session::advance(double seconds) {
+    if (!playing || !timeline) return;
+    // A stalled frame must not turn into a burst of steps.
+    play_clock = std::min(play_clock + seconds * steps_per_second, 3.0);
+    while (play_clock >= 1) {
+        play_clock -= 1;
+        if (!timeline->forward() || on_breakpoint()) {
+            playing = false;
+            break;
+        }
+    }
+    if (timeline->at_end()) playing = false;
+}
+
+void Session::set_status(std::string text, bool error) {
+    status = std::move(text);
+    status_is_error = error;
+}
+
+}  // namespace cg::viewer

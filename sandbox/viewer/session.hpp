@@ -1,0 +1,109 @@
+// The viewer's whole state in one object, passed explicitly to every panel (no globals):
+// which algorithm runs on which input, where in its timeline the student is, how the canvas
+// looks at it, and the little UI memory the panels need from one frame to the next.
+//
+// A refused input never loses the picture: the editor keeps the bad input and shows why it
+// was refused, while the canvas keeps showing the last run that did start.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "checkpoint.hpp"
+#include "core/timeline.hpp"
+#include "viewer/fonts.hpp"
+
+namespace cg::viewer {
+
+// The narration log (the steps up to the current one), rebuilt only when the run or the
+// step changes, because going back past the timeline's window replays steps.
+struct NarrationLog {
+    static constexpr std::size_t kMaxEntries = 500;
+    std::uint64_t run = std::numeric_limits<std::uint64_t>::max();  // Session::run_id
+    std::size_t index = 0;                                          // the step it was built for
+    std::size_t first = 1;                                          // the step number of steps[0]
+    std::vector<StepInfo> steps;
+};
+
+struct CanvasState {
+    View2 view;
+    bool fit_pending = true;       // fit the view to the scene when next drawn (size known then)
+    int dragged_handle = -1;       // index into Scene::handles while one is dragged
+    glm::dvec2 grab_offset{0, 0};  // handle minus mouse, in world units: no jump on grab
+    bool panning = false;
+};
+
+struct Session {
+    explicit Session(const Registry& r) : registry(r) {}
+
+    const Registry& registry;
+    Fonts fonts;
+
+    // --- what runs ---
+    const Algorithm* algorithm = nullptr;
+    json input;                                // as the editor shows it, possibly refused
+    std::string input_error;                   // why `input` was refused; empty when it runs
+    std::unique_ptr<Timeline> timeline;        // the last run that started; null if none has
+    std::optional<std::size_t> probed_length;  // its length, if a quick dry run finished
+    std::uint64_t run_id = 0;     // counts restarts, so caches know when they are stale
+    double probe_seconds = 0.05;  // time a dry run may take to find the length
+
+    // --- stepping ---
+    std::set<int> breakpoints;  // pseudocode lines, 1-based
+    bool playing = false;
+    float steps_per_second = 2.0f;
+    double play_clock = 0;  // steps owed to Play; one is taken whenever it reaches 1
+
+    CanvasState canvas;
+
+    // --- panels ---
+    std::string checkpoint_path = "checkpoint.json";
+    std::string status;  // the last save / open / screenshot message
+    bool status_is_error = false;
+    bool screenshot_requested = false;  // taken by the main loop after the frame is drawn
+    int followed_line = 0;              // the pseudocode line last scrolled into view
+    std::string followed_event;         // ... and the event in the legend
+
+    // --- starting runs ---
+    // Starts `a` on `in` and moves to `step` (clamped to the end). Throws InputError and
+    // leaves the session unchanged when the input is refused.
+    void start(const Algorithm& a, json in, std::size_t step);
+    // The same for the viewer: a refusal is kept in input_error and false returned.
+    bool try_start(const Algorithm& a, json in, std::size_t step);
+    void choose(const Algorithm& a);  // its example input, at step 0, view fitted
+    void load(const Checkpoint& c);   // never throws
+    bool edit(json edited);           // restarts at the current step
+    Checkpoint checkpoint() const;
+
+    // --- where we are ---
+    std::size_t index() const { return timeline ? timeline->index() : 0; }
+    std::optional<std::size_t> length() const;
+    const StepInfo* last_step() const { return timeline ? timeline->last_step() : nullptr; }
+    bool at_end() const { return !timeline || timeline->at_end(); }
+    Scene scene() const;
+    const NarrationLog& log();
+
+    // --- moving (each does nothing without a run) ---
+    void step_forward();
+    void step_back();
+    void reset();
+    void run_to_end();  // stops early on a breakpoint
+    void jump(std::size_t step);
+    void toggle_play();
+    void advance(double seconds);  // Play's clock
+
+    void set_status(std::string text, bool error);
+
+  private:
+    bool on_breakpoint();  // true (and says so) when the last step's line has a breakpoint
+
+    NarrationLog log_;
+};
+
+}  // namespace cg::viewer
