@@ -60,9 +60,13 @@ private:
         if (!frames_.empty() && frames_.back().array) frames_.back().key = std::to_string(frames_.back().next_index++);
     }
     std::string path() const {
+        // The innermost list is still reading its failing element (next_index); every outer
+        // list has already counted the element that contains it (next_index - 1).
         std::string p;
-        for (const Frame& f : frames_) {
-            if (f.array) p += "[" + std::to_string(f.next_index) + "]";  // the failing element
+        for (std::size_t i = 0; i < frames_.size(); ++i) {
+            const Frame& f = frames_[i];
+            const bool innermost = i + 1 == frames_.size();
+            if (f.array) p += "[" + std::to_string(innermost ? f.next_index : f.next_index - 1) + "]";
             else if (!f.key.empty()) p += (p.empty() ? "" : ".") + f.key;
         }
         return p;
@@ -194,6 +198,62 @@ void Reader::only(std::initializer_list<const char*> allowed) const {
     }
 }
 
+namespace {
+bool is_flat(const json& j) {
+    if (!j.is_array()) return false;
+    for (const json& e : j)
+        if (e.is_structured() && !(e.is_array() && e.size() <= 4 && is_flat(e) && !e.empty())) return false;
+    return true;
+}
+
+std::string inline_dump(const json& j) {
+    if (!j.is_array()) return j.dump();
+    std::string s = "[";
+    for (std::size_t i = 0; i < j.size(); ++i) s += (i ? ", " : "") + inline_dump(j[i]);
+    return s + "]";
+}
+
+void pretty_into(const json& j, int indent, int depth, std::string& out) {
+    const std::string pad(static_cast<std::size_t>(indent * (depth + 1)), ' ');
+    const std::string close_pad(static_cast<std::size_t>(indent * depth), ' ');
+    if (j.is_object() && !j.empty()) {
+        out += "{\n";
+        std::size_t i = 0;
+        for (auto it = j.begin(); it != j.end(); ++it, ++i) {
+            out += pad + json(it.key()).dump() + ": ";
+            pretty_into(it.value(), indent, depth + 1, out);
+            out += i + 1 < j.size() ? ",\n" : "\n";
+        }
+        out += close_pad + "}";
+    } else if (j.is_array() && !j.empty() && !is_flat(j)) {
+        out += "[\n";
+        for (std::size_t i = 0; i < j.size(); ++i) {
+            out += pad;
+            pretty_into(j[i], indent, depth + 1, out);
+            out += i + 1 < j.size() ? ",\n" : "\n";
+        }
+        out += close_pad + "]";
+    } else if (j.is_array()) {
+        out += inline_dump(j);
+    } else {
+        out += j.dump();
+    }
+}
+}  // namespace
+
+std::string pretty(const json& j, int indent) {
+    std::string out;
+    pretty_into(j, indent, 0, out);
+    return out;
+}
+
+json nice_number(double x) {
+    if (std::isfinite(x) && x == std::floor(x) && std::fabs(x) < 1e15) return static_cast<long long>(x);
+    return x;
+}
+json nice_point(glm::dvec2 p) { return json::array({nice_number(p.x), nice_number(p.y)}); }
+json nice_point(glm::dvec3 p) { return json::array({nice_number(p.x), nice_number(p.y), nice_number(p.z)}); }
+
 json to_json(glm::dvec2 p) { return json::array({p.x, p.y}); }
 json to_json(glm::dvec3 p) { return json::array({p.x, p.y, p.z}); }
 
@@ -216,6 +276,7 @@ json step_to_json(std::size_t index, const StepInfo& info) {
                 {"event", info.event},
                 {"line", info.line},
                 {"narration", info.narration},
+                {"math", info.math},
                 {"variables", std::move(vars)}};
 }
 

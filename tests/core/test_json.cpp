@@ -37,6 +37,8 @@ TEST_CASE("json reader: non-finite numbers are refused", "[json]") {
     CHECK_THROWS_WITH(cg::parse_json(R"({"x": NaN})"), Catch::Contains("not valid JSON") && Catch::Contains("line 1"));
     CHECK_THROWS_WITH(cg::parse_json(R"({"a": {"x": [1, 1e999]}})"), Catch::StartsWith("a.x[1]: not valid JSON: number overflow"));
     CHECK_THROWS_WITH(cg::parse_json(R"({"a": {"x": 1, "y": NaN}})"), Catch::StartsWith("a.y: not valid JSON: parse error at line 1"));
+    CHECK_THROWS_WITH(cg::parse_json(R"({"w": [[0, 0], [1, 1e999], [2, 2]]})"), Catch::StartsWith("w[1][1]: not valid JSON: number overflow"));
+    CHECK_THROWS_WITH(cg::parse_json(R"({"w": [{"a": 1}, {"a": [3, 1e999]}]})"), Catch::StartsWith("w[1].a[1]: not valid JSON: number overflow"));
 }
 
 TEST_CASE("format: short, deterministic numbers", "[format]") {
