@@ -54,7 +54,16 @@ std::string edge_equation(const LiangBarsky::State& s, int k) {
     }
 }
 
-// "p_1 = −dx = -4, q_1 = x0 − xmin = -1"
+// "p_1 = −dx = -4, q_1 = x0 − xmin = -1", and the same in LaTeX.
+std::string pq_tex(const LiangBarsky::State& s) {
+    static constexpr const char* kP[] = {"", "-dx", "dx", "-dy", "dy"};
+    static constexpr const char* kQ[] = {"", "x_0 - x_{min}", "x_{max} - x_0", "y_0 - y_{min}",
+                                         "y_{max} - y_0"};
+    const std::string k = std::to_string(s.k);
+    return "p_" + k + " = " + kP[s.k] + " = " + tex(s.p_k) + ",\\quad q_" + k + " = " + kQ[s.k] +
+           " = " + tex(s.q_k);
+}
+
 std::string pq_text(const LiangBarsky::State& s) {
     static constexpr const char* kP[] = {"", "−dx", "dx", "−dy", "dy"};
     static constexpr const char* kQ[] = {"", "x0 − xmin", "xmax − x0", "y0 − ymin", "ymax − y0"};
@@ -188,40 +197,51 @@ void LiangBarsky::advance(State& s) {
 // What the step just taken means, told with its numbers. `s` is the state after the step.
 void LiangBarsky::narrate(const State& s, StepInfo& info) {
     const int k = s.k;
-    if (s.phase == Phase::Edge && k == 0) return;  // cannot happen: setup always moves on
     if (k == 0) {
         info.event = "setup";
         info.line = kLineInit;
         info.narration = "dx = x1 − x0 = " + num(s.dx) + ", dy = y1 − y0 = " + num(s.dy) +
                          "; start with t_enter = 0 and t_leave = 1.";
+        info.math = "dx = x_1 - x_0 = " + tex(s.dx) + ",\\quad dy = y_1 - y_0 = " + tex(s.dy) +
+                    ",\\quad t_{enter} = 0,\\quad t_{leave} = 1";
     } else if (s.phase != Phase::Done) {  // an edge was just tested
         std::string head = "Edge " + std::to_string(k) + " (" + kEdgeName[k] + ", " +
                            edge_equation(s, k) + "): " + pq_text(s) + ". ";
         std::string rk = "r_" + std::to_string(k) + " = q/p = " + num(s.q_k) + "/" + num(s.p_k) +
                          " = " + num(s.r_k);
+        const std::string K = std::to_string(k);
+        const std::string rk_tex = ",\\quad r_" + K + " = \\frac{q_" + K + "}{p_" + K + "} = \\frac{" +
+                                   tex(s.q_k) + "}{" + tex(s.p_k) + "} = " + tex(s.r_k);
+        info.math = pq_tex(s);
         switch (s.verdict) {
             case Verdict::ParallelInside:
                 info.event = "parallel-inside";
                 info.line = kLineParallel;
                 info.narration = head + "p = 0 and q ≥ 0: parallel to this edge and on its inner "
                                         "side, so nothing changes.";
+                info.math += " \\ge 0";
                 break;
             case Verdict::ParallelOutside:
                 info.event = "parallel-outside";
                 info.line = kLineParallelReject;
                 info.narration = head + "p = 0 and q < 0: parallel to this edge and outside it.";
+                info.math += " < 0";
                 break;
             case Verdict::Entering:
                 info.event = "entering";
                 info.line = kLineEntering;
                 info.narration = head + "p < 0, entering: " + rk + ", so t_enter = max(" +
                                  num(s.t_before) + ", " + num(s.r_k) + ") = " + num(s.t_enter) + ".";
+                info.math += rk_tex + ",\\quad t_{enter} = \\max(" + tex(s.t_before) + ", " +
+                             tex(s.r_k) + ") = " + tex(s.t_enter);
                 break;
             default:
                 info.event = "leaving";
                 info.line = kLineLeaving;
                 info.narration = head + "p > 0, leaving: " + rk + ", so t_leave = min(" +
                                  num(s.t_before) + ", " + num(s.r_k) + ") = " + num(s.t_leave) + ".";
+                info.math += rk_tex + ",\\quad t_{leave} = \\min(" + tex(s.t_before) + ", " +
+                             tex(s.r_k) + ") = " + tex(s.t_leave);
                 break;
         }
     } else if (!s.visible) {
@@ -230,10 +250,13 @@ void LiangBarsky::narrate(const State& s, StepInfo& info) {
             info.line = kLineParallelReject;
             info.narration = std::string("The segment runs outside the ") + kEdgeName[k] +
                              " edge along its whole length: reject.";
+            info.math = "p_" + std::to_string(k) + " = 0,\\quad q_" + std::to_string(k) + " = " +
+                        tex(s.q_k) + " < 0";
         } else {
             info.line = kLineEmptyReject;
             info.narration = "t_enter = " + num(s.t_enter) + " > t_leave = " + num(s.t_leave) +
                              ": the segment misses the window, reject.";
+            info.math = "t_{enter} = " + tex(s.t_enter) + " > t_{leave} = " + tex(s.t_leave);
         }
     } else {
         info.event = "accept";
@@ -241,6 +264,8 @@ void LiangBarsky::narrate(const State& s, StepInfo& info) {
         info.narration = "Q0 = P(" + num(s.t_enter) + ") = " + num(point_at(s.in, s.t_enter)) +
                          " and Q1 = P(" + num(s.t_leave) + ") = " +
                          num(point_at(s.in, s.t_leave)) + ": this part of the segment is visible.";
+        info.math = "Q_0 = P(" + tex(s.t_enter) + ") = " + tex(point_at(s.in, s.t_enter)) +
+                    ",\\quad Q_1 = P(" + tex(s.t_leave) + ") = " + tex(point_at(s.in, s.t_leave));
     }
     fill_vars(s, info);
 }

@@ -20,9 +20,12 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "core/rng.hpp"
 #include "core/run.hpp"
 
 namespace cg {
@@ -67,6 +70,11 @@ struct LiangBarsky {
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
     static void draw(const State& s, Scene& scene);
+
+    // Exam practice (liang_barsky_exam.cpp).
+    static Input exam_input(Rng& rng);
+    static std::string question(const Input& in);
+    static std::vector<std::string> answer_fields();
 
     // The same clipping as one straight-line function, for the benchmark's comparison.
     static Result clip(const Input& in);

@@ -20,6 +20,15 @@ struct JsonIo<LiangBarsky> {
         return in;
     }
 
+    static json input_json(const LiangBarsky::Input& in) {
+        const auto& w = in.window;
+        return json{{"window",
+                     {{"xmin", nice_number(w.xmin)}, {"ymin", nice_number(w.ymin)},
+                      {"xmax", nice_number(w.xmax)}, {"ymax", nice_number(w.ymax)}}},
+                    {"p0", nice_point(in.p0)},
+                    {"p1", nice_point(in.p1)}};
+    }
+
     static json result(const LiangBarsky::Result& r) {
         return json{{"visible", r.visible},
                     {"t_enter", r.t_enter},

@@ -25,6 +25,26 @@ std::string num(glm::dvec3 p, int digits) {
     return "(" + num(p.x, digits) + ", " + num(p.y, digits) + ", " + num(p.z, digits) + ")";
 }
 
+std::string tex(double x, int digits) {
+    std::string s = num(x, digits);
+    auto e = s.find('e');
+    if (e == std::string::npos) return s;
+    // "2.5e-12" -> "2.5 \times 10^{-12}"; printf writes at least two exponent digits.
+    std::string mantissa = s.substr(0, e), exponent = s.substr(e + 1);
+    bool negative = exponent[0] == '-';
+    exponent = exponent.substr(exponent[0] == '-' || exponent[0] == '+' ? 1 : 0);
+    while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
+    return mantissa + " \\times 10^{" + (negative ? "-" : "") + exponent + "}";
+}
+
+std::string tex(glm::dvec2 p, int digits) {
+    return "(" + tex(p.x, digits) + ", " + tex(p.y, digits) + ")";
+}
+
+std::string tex(glm::dvec3 p, int digits) {
+    return "(" + tex(p.x, digits) + ", " + tex(p.y, digits) + ", " + tex(p.z, digits) + ")";
+}
+
 namespace {
 std::string list(const std::vector<double>& v, int digits) {
     std::string s = "(";

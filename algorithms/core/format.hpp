@@ -16,6 +16,11 @@ std::string num(double x, int digits = 6);
 std::string num(glm::dvec2 p, int digits = 6);  // "(1, 2.5)"
 std::string num(glm::dvec3 p, int digits = 6);  // "(1, 2.5, -3)"
 
+// The same numbers for LaTeX: "-4", "0.25", "2.5 \\times 10^{-12}", points "(1, 2.5)".
+std::string tex(double x, int digits = 6);
+std::string tex(glm::dvec2 p, int digits = 6);
+std::string tex(glm::dvec3 p, int digits = 6);
+
 // A Value as the variables inspector shows it.
 std::string to_text(const Value& v, int digits = 6);
 

@@ -3,7 +3,7 @@
 // Every algorithm in the sandbox is a resumable state machine. Advancing it by one step
 // returns a StepInfo: which kind of event happened (an id such as "entering" that lessons
 // attach their text to), which pseudocode line is now active, one sentence with the actual
-// numbers, and the named variables. The viewer, the CLI trace, the worked examples and the
+// numbers, the step's formula (LaTeX), and the named variables. The viewer, the CLI trace, the worked examples and the
 // tests all read this one record, so nothing is computed twice.
 #pragma once
 
@@ -29,6 +29,7 @@ struct StepInfo {
     std::string event;      // event kind id, one of the algorithm's Spec::events
     int line = 0;           // active pseudocode line, 1-based (0: none)
     std::string narration;  // one sentence, with the numbers of this step
+    std::string math;       // the step's formula in LaTeX, with its numbers (may be empty)
     std::vector<Var> vars;  // the variables after this step, in display order
     bool operator==(const StepInfo&) const = default;
 };

@@ -62,10 +62,18 @@ glm::dvec2 as_point2(const json& v, const std::string& field);
 glm::dvec3 as_point3(const json& v, const std::string& field);
 std::string describe(const json& v);  // "a string (\"abc\")", for error messages
 
+// Pretty-printed JSON that stays readable: objects one field per line, lists of numbers (points,
+// matrix rows) on one line.
+std::string pretty(const json& j, int indent = 2);
+// A number for an input file: integral values as integers ("1", not "1.0").
+json nice_number(double x);
+json nice_point(glm::dvec2 p);
+json nice_point(glm::dvec3 p);
+
 json to_json(const Value& v);
 json to_json(glm::dvec2 p);
 json to_json(glm::dvec3 p);
-// One line of a trace: {"index", "event", "line", "narration", "variables"}.
+// One line of a trace: {"index", "event", "line", "narration", "math", "variables"}.
 json step_to_json(std::size_t index, const StepInfo& info);
 
 }  // namespace cg

@@ -5,12 +5,15 @@
 // in algorithms/algorithms.def.
 #pragma once
 
+#include <concepts>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/rng.hpp"
 #include "core/run.hpp"
 #include "io/json.hpp"
 
@@ -21,6 +24,11 @@ struct Algorithm {
     std::function<json()> example;                              // a valid sample input
     std::function<std::unique_ptr<Run>(const json&)> create;    // throws InputError
     std::function<json(const Run&)> result;                     // the result of a finished run
+
+    // Exam practice; empty when the algorithm has no generator (see io/exam.hpp).
+    std::function<json(std::uint64_t seed)> exam_input;  // a fresh exam-style input
+    std::function<std::string(const json&)> question;    // the question for an input
+    std::vector<std::string> answer_fields;              // the result fields that answer it
 };
 
 class Registry {
@@ -38,14 +46,26 @@ Registry builtin_registry();
 
 // Specialised by each algorithm in its *_json.cpp:
 //     static typename A::Input input(const json&);    // strict, naming fields; then A::start validates
+//     static json input_json(const typename A::Input&);
 //     static json result(const typename A::Result&);
 //     static json example();
 template <class A>
 struct JsonIo;
 
+// An algorithm with an exam generator also has (in its <name>_exam.cpp, GLM + std only):
+//     static Input exam_input(Rng&);                  // nice numbers, sometimes degenerate
+//     static std::string question(const Input&);
+//     static std::vector<std::string> answer_fields();
+template <class A>
+concept HasExam = requires(Rng& rng, const typename A::Input& in) {
+    { A::exam_input(rng) } -> std::same_as<typename A::Input>;
+    { A::question(in) } -> std::convertible_to<std::string>;
+    { A::answer_fields() } -> std::convertible_to<std::vector<std::string>>;
+};
+
 template <class A>
 Algorithm make_algorithm() {
-    return Algorithm{
+    Algorithm a{
         &A::spec(),
         [] { return JsonIo<A>::example(); },
         [](const json& j) -> std::unique_ptr<Run> {
@@ -54,7 +74,19 @@ Algorithm make_algorithm() {
         [](const Run& run) {
             return JsonIo<A>::result(A::result(static_cast<const RunOf<A>&>(run).state));
         },
+        {},
+        {},
+        {},
     };
+    if constexpr (HasExam<A>) {
+        a.exam_input = [](std::uint64_t seed) {
+            Rng rng(seed);
+            return JsonIo<A>::input_json(A::exam_input(rng));
+        };
+        a.question = [](const json& j) { return A::question(JsonIo<A>::input(j)); };
+        a.answer_fields = A::answer_fields();
+    }
+    return a;
 }
 
 }  // namespace cg

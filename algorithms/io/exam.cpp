@@ -1,0 +1,107 @@
+#include "io/exam.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/format.hpp"
+
+namespace cg {
+
+bool has_exam(const Algorithm& a) { return static_cast<bool>(a.exam_input); }
+
+ExamProblem exam_for_input(const Algorithm& a, const json& input) {
+    ExamProblem p;
+    p.algorithm = a.spec->id;
+    p.input = input;
+    p.question = a.question ? a.question(input) : "Run " + a.spec->title + " on the input below.";
+    p.answers = a.answer_fields;
+    auto run = a.create(input);
+    while (!run->done()) run->step(nullptr);
+    const json result = a.result(*run);
+    p.expected = json::object();
+    for (const std::string& field : p.answers) p.expected[field] = result.at(field);
+    return p;
+}
+
+ExamProblem make_exam(const Algorithm& a, std::uint64_t seed) {
+    if (!has_exam(a)) throw InputError("", a.spec->id + " has no exam generator yet");
+    ExamProblem p = exam_for_input(a, a.exam_input(seed));
+    p.seed = seed;
+    return p;
+}
+
+json exam_to_json(const ExamProblem& p) {
+    return json{{"question", p.question},
+                {"input", p.input},
+                {"answers", p.answers},
+                {"expected", p.expected}};
+}
+
+bool answer_matches(const json& expected, const json& given, double tolerance) {
+    if (expected.is_number()) {
+        if (!given.is_number()) return false;
+        const double e = expected.get<double>(), g = given.get<double>();
+        return std::fabs(e - g) <= tolerance * std::max(1.0, std::fabs(e));
+    }
+    if (expected.is_array()) {
+        if (!given.is_array() || given.size() != expected.size()) return false;
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            if (!answer_matches(expected[i], given[i], tolerance)) return false;
+        return true;
+    }
+    if (expected.is_object()) {
+        if (!given.is_object() || given.size() != expected.size()) return false;
+        for (auto it = expected.begin(); it != expected.end(); ++it)
+            if (!given.contains(it.key()) || !answer_matches(it.value(), given.at(it.key()), tolerance))
+                return false;
+        return true;
+    }
+    return expected == given;  // booleans, strings, null
+}
+
+namespace {
+std::string show(const json& v) {
+    if (v.is_number()) return num(v.get<double>());
+    if (v.is_array()) {
+        std::string s = "[";
+        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + show(v[i]);
+        return s + "]";
+    }
+    return v.dump();
+}
+}  // namespace
+
+std::vector<FieldGrade> grade(const ExamProblem& p, const json& given, double tolerance) {
+    std::vector<FieldGrade> grades;
+    for (const std::string& field : p.answers) {
+        FieldGrade g{field, false, ""};
+        const json& expected = p.expected.at(field);
+        if (!given.is_object() || !given.contains(field)) {
+            g.why = "no answer given; expected " + show(expected);
+        } else if (answer_matches(expected, given.at(field), tolerance)) {
+            g.correct = true;
+        } else {
+            g.why = "expected " + show(expected) + ", got " + show(given.at(field));
+        }
+        grades.push_back(g);
+    }
+    return grades;
+}
+
+json parse_answer(const std::string& text) {
+    std::string t = text;
+    t.erase(0, t.find_first_not_of(" \t\r\n"));
+    t.erase(t.find_last_not_of(" \t\r\n") + 1);
+    std::string lower = t;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (lower == "yes" || lower == "visible") return true;
+    if (lower == "no") return false;
+    if (lower == "none" || lower == "-" || lower.empty()) return nullptr;
+    // "(1, 3)" reads as the point [1, 3].
+    if (t.size() >= 2 && t.front() == '(' && t.back() == ')') t = "[" + t.substr(1, t.size() - 2) + "]";
+    json v = json::parse(t, nullptr, false);
+    if (v.is_discarded()) return t;  // kept as text: it will simply not match
+    return v;
+}
+
+}  // namespace cg
