@@ -75,8 +75,38 @@ void Timeline::jump(std::size_t n) {
     std::size_t k = std::min(n / stride_, checkpoints_.size() - 1);
     std::size_t window_last = window_first_ + window_.size() - 1;
     if (n < window_first_ || k * stride_ > window_last) restart_window(std::min(n, k * stride_));
+    fast_forward(n);
     while (window_first_ + window_.size() <= n && !window_.back().state->done()) push_next();
     index_ = std::min(n, window_first_ + window_.size() - 1);
+}
+
+void Timeline::fast_forward(std::size_t n) {
+    // Only the last 2·stride states before n will stay in the window; the ones before them
+    // are stepped in place without narration, except where a checkpoint is due (its step's
+    // narration is kept with it) and the very last one (it becomes the window's first).
+    std::size_t i = window_first_ + window_.size() - 1;
+    if (n <= i + 2 * stride_ + 1 || window_.back().state->done()) return;
+    const std::size_t until = n - (2 * stride_ + 1);
+    std::unique_ptr<Run> run = window_.back().state->clone();
+    StepInfo info;
+    bool keep = false;
+    while (i < until && !run->done()) {
+        keep = (i + 1) % stride_ == 0 || i + 1 == until;
+        info = {};
+        run->step(keep ? &info : nullptr);
+        ++i;
+        if (run->done()) length_ = i;
+        if (keep) note_checkpoint(i, Entry{run->clone(), info});
+    }
+    if (!keep) {
+        // It ended on a quiet step, whose narration the end state needs: replay the last
+        // stretch from its checkpoint (at most a stride of steps).
+        restart_window(i);
+        return;
+    }
+    window_.clear();
+    window_.push_back(Entry{std::move(run), std::move(info)});
+    window_first_ = i;
 }
 
 std::vector<StepInfo> Timeline::steps(std::size_t first, std::size_t last) const {

@@ -63,6 +63,7 @@ private:
     void push_next();  // steps the last state of the window once, appending the result
     void restart_window(std::size_t i);  // window := {state i}, from the nearest checkpoint
     void note_checkpoint(std::size_t i, const Entry& e);
+    void fast_forward(std::size_t n);  // towards n without narrating what the window drops
 
     std::size_t max_steps_;
     std::size_t stride_ = 16;

@@ -82,6 +82,24 @@ TEST_CASE("timeline: forward, back, jump and reset agree with stored states", "[
     REQUIRE(t.length() == std::size_t(n));
     REQUIRE_FALSE(t.forward());
 
+    SECTION("a fresh jump far past the end lands on the end with its narration") {
+        for (std::size_t target : {std::size_t(n), std::size_t(n + 1), std::size_t(n + 500), std::size_t(10 * n)}) {
+            cg::Timeline fresh(walk(n));
+            fresh.jump(target);
+            REQUIRE(fresh.index() == std::size_t(n));
+            REQUIRE(state_of(fresh) == states[n]);
+            REQUIRE(*fresh.last_step() == infos[n]);
+            REQUIRE(fresh.back());
+            REQUIRE(*fresh.last_step() == infos[n - 1]);
+        }
+        for (std::size_t target : {std::size_t(37), std::size_t(500), std::size_t(777)}) {
+            cg::Timeline fresh(walk(n));
+            fresh.jump(target);
+            REQUIRE(state_of(fresh) == states[target]);
+            REQUIRE(*fresh.last_step() == infos[target]);
+        }
+    }
+
     SECTION("the step log replays the same infos from any point") {
         t.jump(17);
         auto log = t.steps(1, n);
