@@ -145,6 +145,24 @@ const char* case_name(SutherlandHodgman::Case c) {
     }
 }
 
+// The same formulas in LaTeX, with the step's numbers.
+// "\mathrm{side}(S) = (B - A) \times (S - A) = (4, 0) \times (2, 6) = 24 \ge 0"
+std::string side_tex(const char* name, double orient, dvec2 A, dvec2 B, dvec2 X, double value) {
+    const std::string x = name;
+    const std::string product = tex(B - A) + " \\times " + tex(X - A);
+    return "\\mathrm{side}(" + x + ") = " + (orient < 0 ? "-" : "") + "(B - A) \\times (" + x +
+           " - A) = " + (orient < 0 ? "-\\big(" + product + "\\big)" : product) + " = " +
+           tex(value) + (value >= 0 ? " \\ge 0" : " < 0");
+}
+
+// "[(2, 1), (4, 2)]", or "[\,]" for the empty list.
+std::string list_tex(const std::vector<dvec2>& points) {
+    if (points.empty()) return "[\\,]";
+    std::string s = "[";
+    for (std::size_t i = 0; i < points.size(); ++i) s += (i ? ", " : "") + tex(points[i]);
+    return s + "]";
+}
+
 std::string edge_text(const SutherlandHodgman::State& s) {
     const std::size_t m = s.in.window.size();
     return "Window edge " + std::to_string(s.k) + ", W" + std::to_string(s.k) + "→W" +
@@ -269,6 +287,8 @@ void SutherlandHodgman::advance(State& s) {
             s.orient = s.window_area > 0 ? 1.0 : -1.0;
             s.input.reserve(list_capacity(s.in));
             s.output.reserve(list_capacity(s.in));
+            s.passes.reserve(list_capacity(s.in) * s.in.window.size());
+            s.pass_end.reserve(s.in.window.size());
             s.input.assign(s.in.polygon.begin(), s.in.polygon.end());
             s.phase = Phase::NextEdge;
             return;
@@ -289,6 +309,8 @@ void SutherlandHodgman::advance(State& s) {
         case Phase::EdgeDone:  // The output list becomes the next input list
             std::swap(s.input, s.output);
             s.output.clear();
+            s.passes.insert(s.passes.end(), s.input.begin(), s.input.end());
+            s.pass_end.push_back(s.passes.size());
             if (s.input.empty()) s.phase = Phase::Done;  // nothing inside: stop
             else if (s.k + 1 == static_cast<int>(s.in.window.size())) s.phase = Phase::Finish;
             else s.phase = Phase::NextEdge;
@@ -367,6 +389,9 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
         info.event = "setup";
         info.line = kLineInput;
         const bool ccw = s.orient > 0;
+        info.math = "\\text{area} = \\tfrac{1}{2} \\sum_i (W_i - W_0) \\times (W_{i+1} - W_0) = " +
+                    tex(s.window_area) + (ccw ? " > 0 \\Rightarrow \\text{orient} = +1"
+                                              : " < 0 \\Rightarrow \\text{orient} = -1");
         info.narration = "The window's signed area is " + num(s.window_area) +
                          (ccw ? " > 0, so it runs counter-clockwise and inside means left of"
                               : " < 0, so it runs clockwise and inside means right of") +
@@ -383,6 +408,17 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
         const std::string minus_P = s.side_P < 0 ? "(" + num(s.side_P) + ")" : num(s.side_P);
         const std::string cut = "SP crosses AB at t = " + num(side_S) + "/(" + num(side_S) +
                                 " − " + minus_P + ") = " + num(s.t) + ", I = " + num(s.I);
+        info.math = side_tex("S", s.orient, s.A, s.B, S, side_S) + ",\\quad " +
+                    side_tex("P", s.orient, s.A, s.B, P, s.side_P);
+        if (s.which == Case::InOut || s.which == Case::OutIn) {
+            const std::string minus_P_tex =
+                s.side_P < 0 ? "(" + tex(s.side_P) + ")" : tex(s.side_P);
+            info.math += ",\\quad t = \\frac{\\mathrm{side}(S)}{\\mathrm{side}(S) - "
+                         "\\mathrm{side}(P)} = \\frac{" + tex(side_S) + "}{" + tex(side_S) +
+                         " - " + minus_P_tex + "} = " + tex(s.t) +
+                         ",\\quad I = S + t\\,(P - S) = " + tex(S) + " + " + tex(s.t) + "\\," +
+                         tex(P - S) + " = " + tex(s.I);
+        }
         switch (s.which) {
             case Case::InIn:
                 info.event = "in-in";
@@ -410,6 +446,7 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
     if (s.phase == Phase::Done && s.input.empty()) {
         info.event = "empty";
         info.line = kLineEmpty;
+        info.math = "\\text{output} = [\\,] \\Rightarrow \\text{stop}";
         info.narration = "Window edge " + std::to_string(s.k) +
                          " done: nothing of the input list lies on its inner side, so the "
                          "output list is empty and the polygon lies outside the window: stop, "
@@ -419,12 +456,14 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
     if (s.phase == Phase::Done) {
         info.event = "done";
         info.line = kLineReturn;
+        info.math = "\\text{result} = " + list_tex(s.input);
         info.narration = "All " + std::to_string(s.in.window.size()) +
                          " window edges done: the clipped polygon is " + list_text(s.input) + ".";
         return;
     }
     info.event = "edge-done";
     info.line = kLineSwap;
+    info.math = "\\text{input} \\leftarrow \\text{output} = " + list_tex(s.input);
     info.narration = "Window edge " + std::to_string(s.k) + " done: its output list of " +
                      vertices(s.input.size()) + ", " + list_text(s.input) + ", becomes " +
                      (s.phase == Phase::Finish
@@ -439,8 +478,15 @@ void SutherlandHodgman::step(State& s, StepInfo* info) {
 }
 
 SutherlandHodgman::Result SutherlandHodgman::result(const State& s) {
-    if (s.phase == Phase::Setup) return {s.in.polygon};
-    return {s.input};
+    if (s.phase == Phase::Setup) return {s.in.polygon, {}};
+    Result r{s.input, {}};
+    r.after_edge.reserve(s.pass_end.size());
+    std::size_t begin = 0;
+    for (const std::size_t end : s.pass_end) {
+        r.after_edge.emplace_back(s.passes.begin() + begin, s.passes.begin() + end);
+        begin = end;
+    }
+    return r;
 }
 
 // ---- [clip] ----------------------------------------------------------------------------------
@@ -454,6 +500,8 @@ SutherlandHodgman::Result SutherlandHodgman::clip(const std::vector<dvec2>& wind
     output.reserve(capacity);
     input.assign(polygon.begin(), polygon.end());
     const std::size_t m = window.size();
+    std::vector<std::vector<dvec2>> after_edge;
+    after_edge.reserve(m);
     for (std::size_t k = 0; k < m; ++k) {
         const dvec2 A = window[k], B = window[k + 1 == m ? 0 : k + 1];
         output.clear();
@@ -474,9 +522,10 @@ SutherlandHodgman::Result SutherlandHodgman::clip(const std::vector<dvec2>& wind
             side_S = side_P;
         }
         std::swap(input, output);
+        after_edge.push_back(input);
         if (input.empty()) break;
     }
-    return {std::move(input)};
+    return {std::move(input), std::move(after_edge)};
 }
 
 // ---- [draw] ----------------------------------------------------------------------------------

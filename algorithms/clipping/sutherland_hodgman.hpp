@@ -12,6 +12,8 @@
 //
 // where I is where S→P crosses the line AB. If a list comes out empty the polygon lies
 // wholly outside the window and the algorithm stops with an empty result.
+// The result keeps every window edge's output list (after_edge) beside the final polygon:
+// those intermediate lists are what an exam asks for.
 //
 // Conventions:
 //   - Inside. side(X) = orient · (B − A) × (X − A), with orient = +1 for a counter-clockwise
@@ -45,10 +47,12 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "core/rng.hpp"
 #include "core/run.hpp"
 
 namespace cg {
@@ -61,6 +65,10 @@ struct SutherlandHodgman {
     };
     struct Result {
         std::vector<glm::dvec2> polygon;  // the clipped polygon, in the order made; may be empty
+        // The output list of each window edge processed, in order: after_edge[k] is what edge k
+        // kept (m lists, or fewer when one came out empty and the run stopped there); the last
+        // equals `polygon`.
+        std::vector<std::vector<glm::dvec2>> after_edge;
         bool operator==(const Result&) const = default;
     };
 
@@ -83,6 +91,11 @@ struct SutherlandHodgman {
         glm::dvec2 I{0};          // the intersection, set in cases 2 and 4
         std::vector<glm::dvec2> input;   // the list being clipped against edge k
         std::vector<glm::dvec2> output;  // what edge k keeps so far
+        // The output list of each window edge finished, one after another: edge k's is
+        // passes[pass_end[k − 1] .. pass_end[k]) (from 0 for k = 0). One flat list, so that
+        // keeping them costs no allocation per edge; result() splits it into after_edge.
+        std::vector<glm::dvec2> passes;
+        std::vector<std::size_t> pass_end;
         bool operator==(const State&) const = default;
     };
 
@@ -93,6 +106,11 @@ struct SutherlandHodgman {
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);  // the current list; the clipped polygon once done
     static void draw(const State& s, Scene& scene);
+
+    // Exam practice (sutherland_hodgman_exam.cpp).
+    static Input exam_input(Rng& rng);
+    static std::string question(const Input& in);
+    static std::vector<std::string> answer_fields();
 
     // The same clipping as one straight-line function, for the benchmark's comparison.
     static Result clip(const std::vector<glm::dvec2>& window,

@@ -1,11 +1,24 @@
 // Sutherland-Hodgman's JSON:
 //   input  {"window": [[x, y], ...], "polygon": [[x, y], ...]}
-//   result {"polygon": [[x, y], ...]}  in the order the algorithm produces it; [] when nothing
-//          of the polygon is inside the window
+//   result {"polygon": [[x, y], ...],  in the order the algorithm produces it; [] when nothing
+//                                      of the polygon is inside the window
+//           "after_edge": [[[x, y], ...], ...]}  the output list of each window edge processed,
+//                                      in order (fewer than the window's edges when one came out
+//                                      empty); the last equals "polygon"
 #include "clipping/sutherland_hodgman.hpp"
 #include "io/registry.hpp"
 
 namespace cg {
+
+namespace {
+
+json points_json(const std::vector<glm::dvec2>& points, json (*point)(glm::dvec2)) {
+    json a = json::array();
+    for (const glm::dvec2& p : points) a.push_back(point(p));
+    return a;
+}
+
+}  // namespace
 
 template <>
 struct JsonIo<SutherlandHodgman> {
@@ -18,17 +31,17 @@ struct JsonIo<SutherlandHodgman> {
         return in;
     }
 
+    // Integral coordinates print as integers ([2, 1], not [2.0, 1.0]), as a student writes them.
     static json input_json(const SutherlandHodgman::Input& in) {
-        json window = json::array(), polygon = json::array();
-        for (const glm::dvec2& p : in.window) window.push_back(to_json(p));
-        for (const glm::dvec2& p : in.polygon) polygon.push_back(to_json(p));
-        return json{{"window", std::move(window)}, {"polygon", std::move(polygon)}};
+        return json{{"window", points_json(in.window, nice_point)},
+                    {"polygon", points_json(in.polygon, nice_point)}};
     }
 
     static json result(const SutherlandHodgman::Result& r) {
-        json polygon = json::array();
-        for (const glm::dvec2& p : r.polygon) polygon.push_back(to_json(p));
-        return json{{"polygon", std::move(polygon)}};
+        json after_edge = json::array();
+        for (const auto& list : r.after_edge) after_edge.push_back(points_json(list, to_json));
+        return json{{"polygon", points_json(r.polygon, to_json)},
+                    {"after_edge", std::move(after_edge)}};
     }
 
     static json example() {

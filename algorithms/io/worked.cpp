@@ -26,7 +26,7 @@ std::string show(const json& v) {
     if (v.is_null()) return "none";
     if (v.is_number()) return num(v.get<double>());
     if (v.is_array()) {
-        bool flat = true;
+        bool flat = !v.empty();  // an empty list is a list, not a point
         for (const json& e : v) flat = flat && e.is_number();
         std::string s = flat ? "(" : "[";
         for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + show(v[i]);

@@ -8,8 +8,7 @@
 #include <limits>
 #include <numbers>
 
-#include <polyclipping/clipper.hpp>
-
+#include "polygon_reference.hpp"
 #include "clipping/sutherland_hodgman.hpp"
 #include "core/rng.hpp"
 #include "core/timeline.hpp"
@@ -18,6 +17,7 @@
 using cg::SutherlandHodgman;
 using glm::dvec2;
 using Points = std::vector<dvec2>;
+using polygon_reference::shoelace;
 
 namespace {
 
@@ -59,15 +59,6 @@ std::vector<std::string> expected_events(const std::vector<std::vector<std::stri
 
 std::vector<std::string> repeat(const char* event, int n) {
     return std::vector<std::string>(n, event);
-}
-
-double shoelace(const Points& p) {
-    double a2 = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const dvec2 a = p[i], b = p[(i + 1) % p.size()];
-        a2 += a.x * b.y - a.y * b.x;
-    }
-    return a2 / 2;
 }
 
 void check_declared(const Traced& t) {
@@ -228,6 +219,12 @@ TEST_CASE("sutherland-hodgman: exam cases worked by hand", "[clipping][sutherlan
                 // except (14/3, 4), which the clockwise case loses again.
                 CHECK(t.result.polygon[i] == c.expected[i]);
             }
+            // One output list per window edge processed (up to the one that came out empty),
+            // the last of them the result.
+            const auto passes = std::count(c.events.begin(), c.events.end(), "edge-done") +
+                                std::count(c.events.begin(), c.events.end(), "empty");
+            REQUIRE(t.result.after_edge.size() == std::size_t(passes));
+            CHECK(t.result.after_edge.back() == t.result.polygon);
             check_declared(t);
             // The straight-line version agrees with the state machine exactly.
             CHECK(SutherlandHodgman::clip(c.window, c.polygon) == t.result);
@@ -283,6 +280,28 @@ TEST_CASE("sutherland-hodgman: each step reports its line, numbers and variables
     CHECK(t.steps.back().narration ==
           "All 4 window edges done: the clipped polygon is (2, 4), (2, 1), (4, 2), (4, 4).");
 
+    // The formulas with the step's numbers, in LaTeX.
+    CHECK(t.steps[0].math ==
+          "\\text{area} = \\tfrac{1}{2} \\sum_i (W_i - W_0) \\times (W_{i+1} - W_0) = 16 > 0 "
+          "\\Rightarrow \\text{orient} = +1");
+    CHECK(t.steps[5].math ==
+          "\\mathrm{side}(S) = (B - A) \\times (S - A) = (0, 4) \\times (-2, 6) = 8 \\ge 0,"
+          "\\quad \\mathrm{side}(P) = (B - A) \\times (P - A) = (0, 4) \\times (-2, 1) = 8 "
+          "\\ge 0");
+    CHECK(t.steps[6].math ==
+          "\\mathrm{side}(S) = (B - A) \\times (S - A) = (0, 4) \\times (-2, 1) = 8 \\ge 0,"
+          "\\quad \\mathrm{side}(P) = (B - A) \\times (P - A) = (0, 4) \\times (2, 3) = -8 < 0,"
+          "\\quad t = \\frac{\\mathrm{side}(S)}{\\mathrm{side}(S) - \\mathrm{side}(P)} = "
+          "\\frac{8}{8 - (-8)} = 0.5,\\quad I = S + t\\,(P - S) = (2, 1) + 0.5\\,(4, 2) = (4, 2)");
+    CHECK(t.steps[8].math ==
+          "\\text{input} \\leftarrow \\text{output} = [(2, 1), (4, 2), (4, 4.5), (2, 6)]");
+    CHECK(t.steps.back().math == "\\text{result} = [(2, 4), (2, 1), (4, 2), (4, 4)]");
+    // The output list of every window edge is kept for the result.
+    CHECK(t.result.after_edge == std::vector<Points>{{{2, 1}, {6, 3}, {2, 6}},
+                                                     {{2, 1}, {4, 2}, {4, 4.5}, {2, 6}},
+                                                     {{2, 4}, {2, 1}, {4, 2}, {4, 4}},
+                                                     {{2, 4}, {2, 1}, {4, 2}, {4, 4}}});
+
     auto find = [](const cg::StepInfo& step, const std::string& name) {
         for (const auto& v : step.vars)
             if (v.name == name) return v.value;
@@ -312,6 +331,10 @@ TEST_CASE("sutherland-hodgman: each step reports its line, numbers and variables
           "each edge (on the edge counts as inside); the input list is the polygon's 3 "
           "vertices.");
     CHECK(std::get<long long>(find(cw.steps[0], "orient")) == -1);
+    CHECK(cw.steps[1].math ==
+          "\\mathrm{side}(S) = -(B - A) \\times (S - A) = -\\big((0, 4) \\times (2, 6)\\big) = 8 "
+          "\\ge 0,\\quad \\mathrm{side}(P) = -(B - A) \\times (P - A) = -\\big((0, 4) \\times "
+          "(2, 1)\\big) = 8 \\ge 0");
 
     Traced out = run_traced({kSquare, {{5, 5}, {6, 5}, {6, 6}}});
     CHECK(out.steps.back().event == "empty");
@@ -319,6 +342,8 @@ TEST_CASE("sutherland-hodgman: each step reports its line, numbers and variables
     CHECK(out.steps.back().narration ==
           "Window edge 1 done: nothing of the input list lies on its inner side, so the output "
           "list is empty and the polygon lies outside the window: stop, nothing is visible.");
+    CHECK(out.steps.back().math == "\\text{output} = [\\,] \\Rightarrow \\text{stop}");
+    CHECK(out.result.after_edge == std::vector<Points>{{{5, 5}, {6, 5}, {6, 6}}, {}});
 }
 
 TEST_CASE("sutherland-hodgman: bad input names the field", "[clipping][sutherland-hodgman]") {
@@ -414,48 +439,30 @@ TEST_CASE("sutherland-hodgman: bad JSON input names the field", "[clipping][suth
         while (!run->done()) run->step(nullptr);
         return sh->result(*run).dump();
     };
+    // … and the output list of each window edge, up to the one that came out empty.
     CHECK(result_of(sh->example().dump()) ==
-          R"({"polygon":[[2.0,4.0],[2.0,1.0],[4.0,2.0],[4.0,4.0]]})");
+          R"({"polygon":[[2.0,4.0],[2.0,1.0],[4.0,2.0],[4.0,4.0]],"after_edge":[[[2.0,1.0],)"
+          R"([6.0,3.0],[2.0,6.0]],[[2.0,1.0],[4.0,2.0],[4.0,4.5],[2.0,6.0]],[[2.0,4.0],[2.0,1.0],)"
+          R"([4.0,2.0],[4.0,4.0]],[[2.0,4.0],[2.0,1.0],[4.0,2.0],[4.0,4.0]]]})");
     CHECK(result_of(
               R"({"window": [[0, 0], [4, 0], [4, 4]], "polygon": [[5, 0], [6, 0], [6, 1]]})") ==
-          R"({"polygon":[]})");
+          R"({"polygon":[],"after_edge":[[[5.0,0.0],[6.0,0.0],[6.0,1.0]],[]]})");
+    // Generated inputs are written with integral coordinates as integers, as a student would.
+    CHECK(sh->exam_input(1).dump().find(".0") == std::string::npos);
 }
 
 // ---- The reference: Clipper's intersection on integer coordinates ---------------------------
 //
-// Inputs are snapped to a grid of 1/4 or 1/1024 inside [−8, 8]², so that times 2^40 they are
-// integers below 2^44: Clipper reads them exactly, computes in exact integer arithmetic
-// (128-bit where needed), and only rounds its own output vertices to integers, which is an
-// error of at most 0.71 / 2^40 ≈ 6e-13 per vertex in our units. The tolerances below are
-// far larger than that and far smaller than any real mistake.
+// Inputs are snapped to a grid of 1/4 or 1/1024 inside [−8, 8]², which Clipper reads exactly
+// (see polygon_reference.hpp): its vertices are within 6e-13 of the true ones. The tolerances
+// below are far larger than that and far smaller than any real mistake.
 namespace {
 
-constexpr double kScale = 1099511627776.0;  // 2^40
-constexpr double kOnBoundary = 1e-7;        // in input units (1e-7 × kScale in Clipper's)
+constexpr double kOnBoundary = 1e-7;  // in input units (1e-7 × 2^40 in Clipper's)
 
-ClipperLib::Path to_path(const Points& points) {
-    ClipperLib::Path path;
-    for (dvec2 p : points)
-        path.emplace_back(static_cast<ClipperLib::cInt>(p.x * kScale),
-                          static_cast<ClipperLib::cInt>(p.y * kScale));
-    return path;
-}
-
-std::vector<Points> clipper_intersection(const Points& window, const Points& polygon) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPath(to_path(polygon), ClipperLib::ptSubject, true);
-    clipper.AddPath(to_path(window), ClipperLib::ptClip, true);
-    ClipperLib::Paths solution;
-    clipper.Execute(ClipperLib::ctIntersection, solution, ClipperLib::pftNonZero,
-                    ClipperLib::pftNonZero);
-    std::vector<Points> out;
-    for (const auto& path : solution) {
-        Points pts;
-        for (const auto& p : path) pts.push_back({double(p.X) / kScale, double(p.Y) / kScale});
-        out.push_back(pts);
-    }
-    return out;
-}
+using polygon_reference::cross;
+using polygon_reference::intersection;
+using polygon_reference::simple;
 
 double segment_distance(dvec2 p, dvec2 a, dvec2 b) {
     const dvec2 d = b - a, ap = p - a;
@@ -470,42 +477,6 @@ double boundary_distance(dvec2 p, const Points& polygon) {
     for (std::size_t i = 0; i < polygon.size(); ++i)
         best = std::min(best, segment_distance(p, polygon[i], polygon[(i + 1) % polygon.size()]));
     return best;
-}
-
-double cross(dvec2 a, dvec2 b) { return a.x * b.y - a.y * b.x; }
-
-// Exact on grid points: coordinates have at most 14 significant bits, so the products do too.
-bool segments_touch(dvec2 a, dvec2 b, dvec2 c, dvec2 d) {
-    auto orient = [](dvec2 p, dvec2 q, dvec2 r) {
-        const double v = cross(q - p, r - p);
-        return (v > 0) - (v < 0);
-    };
-    auto on = [&](dvec2 p, dvec2 q, dvec2 r) {  // r on segment pq, given collinear
-        return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) &&
-               std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y);
-    };
-    const int o1 = orient(a, b, c), o2 = orient(a, b, d);
-    const int o3 = orient(c, d, a), o4 = orient(c, d, b);
-    if (o1 != o2 && o3 != o4) return true;
-    return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) ||
-           (o4 == 0 && on(c, d, b));
-}
-
-bool simple(const Points& p) {
-    const std::size_t n = p.size();
-    if (n < 3 || shoelace(p) == 0) return false;
-    for (std::size_t i = 0; i < n; ++i) {
-        const dvec2 a = p[i], b = p[(i + 1) % n], c = p[(i + 2) % n];
-        if (a == b) return false;
-        // Adjacent edges may meet only at their shared vertex: no folding back.
-        if (cross(b - a, c - b) == 0 && (b - a).x * (c - b).x + (b - a).y * (c - b).y < 0)
-            return false;
-        for (std::size_t j = i + 2; j < n; ++j) {
-            if (i == 0 && j == n - 1) continue;  // adjacent through the closing edge
-            if (segments_touch(a, b, p[j], p[(j + 1) % n])) return false;
-        }
-    }
-    return true;
 }
 
 double snap(double x, double grid) { return std::round(x / grid) * grid; }
@@ -604,7 +575,7 @@ TEST_CASE("sutherland-hodgman: 10,000 random polygons agree with Clipper", "[cli
         const auto r = cg::run_to_end<SutherlandHodgman>(SutherlandHodgman::start(in));
         REQUIRE(r == SutherlandHodgman::clip(window, polygon));
 
-        const std::vector<Points> ref = clipper_intersection(window, polygon);
+        const std::vector<Points> ref = intersection(window, polygon);
         double ref_area = 0;
         for (const Points& p : ref) ref_area += shoelace(p);
         ref_area = std::fabs(ref_area);
