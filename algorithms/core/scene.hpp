@@ -76,6 +76,19 @@ struct Label2 {
     Style style;
 };
 
+// A raster of square cells, one world unit each: cell (i, j) covers [i, i+1) × [j, j+1) from
+// `origin`, so its centre is origin + (i + 0.5, j + 0.5) — the project's pixel convention.
+// Drawn under everything else. A cell's value is its colour, 0xRRGGBBAA; 0 leaves it empty,
+// and kRoleColour paints it in `role`'s colour (so an algorithm need not know the palette).
+struct PixelGrid2 {
+    static constexpr std::uint32_t kRoleColour = 1;  // "the role's colour" (alpha 1: no real one)
+    glm::dvec2 origin{0, 0};
+    int width = 0, height = 0;        // in cells
+    std::vector<std::uint32_t> rgba;  // width × height, row-major, row 0 at the bottom (y up)
+    Role role = Role::Kept;           // the colour of kRoleColour cells
+    bool grid_lines = true;           // cell borders and centre dots, when zoomed in enough
+};
+
 struct Handle2 {
     glm::dvec2 p;
     std::string name;     // shown on hover: "P0"
@@ -84,7 +97,8 @@ struct Handle2 {
 };
 
 struct Scene {
-    std::vector<HalfPlane2> half_planes;  // drawn first, under everything
+    std::vector<PixelGrid2> grids;        // drawn first, under everything
+    std::vector<HalfPlane2> half_planes;  // then these, under the rest
     std::vector<Polygon2> polygons;
     std::vector<Segment2> segments;
     std::vector<Point2> points;

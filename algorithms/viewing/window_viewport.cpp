@@ -1,0 +1,515 @@
+// Sections: [helpers] [spec] [validate] [advance] [narrate] [result and map] [draw]
+#include "viewing/window_viewport.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/format.hpp"
+
+namespace cg {
+
+namespace {
+
+using glm::dmat3;
+using glm::dvec2;
+using Rect = WindowViewport::Rect;
+using Phase = WindowViewport::Phase;
+
+// ---- [helpers] ------------------------------------------------------------------------------
+
+// Pseudocode, 1-based lines as the steps report them.
+enum Line {
+    kLineSizes = 1,
+    kLineAspect,
+    kLineNdcMatrix,
+    kLineToNdc,
+    kLineDeviceMatrix,
+    kLineToDevice,
+    kLineCompose,
+};
+
+double width(const Rect& r) { return r.xmax - r.xmin; }
+double height(const Rect& r) { return r.ymax - r.ymin; }
+
+// glm matrices are indexed m[column][row].
+dmat3 ndc_from(const Rect& w) {
+    dmat3 m(1.0);
+    m[0][0] = 2 / width(w);
+    m[1][1] = 2 / height(w);
+    m[2][0] = -(w.xmax + w.xmin) / width(w);
+    m[2][1] = -(w.ymax + w.ymin) / height(w);
+    return m;
+}
+
+dmat3 device_from(const Rect& v) {
+    dmat3 m(1.0);
+    m[0][0] = width(v) / 2;
+    m[1][1] = height(v) / 2;
+    m[2][0] = (v.xmax + v.xmin) / 2;
+    m[2][1] = (v.ymax + v.ymin) / 2;
+    return m;
+}
+
+// The points are mapped with the formulas the matrices' rows stand for (M_ndc p and M_vp q,
+// written out): the same numbers, rounded less — 2 (x − xw_min)/Lw − 1 puts the window's
+// corners exactly on ±1, where m00·x + m02 may miss by an ulp.
+dvec2 to_ndc(const Rect& w, dvec2 p) {
+    return {2 * (p.x - w.xmin) / width(w) - 1, 2 * (p.y - w.ymin) / height(w) - 1};
+}
+dvec2 to_device(const Rect& v, dvec2 q) {
+    return {v.xmin + (q.x + 1) * width(v) / 2, v.ymin + (q.y + 1) * height(v) / 2};
+}
+
+bool aspects_differ(double a, double b) {
+    return std::fabs(a - b) > WindowViewport::kAspectTolerance * std::max(a, b);
+}
+
+void check_finite(double v, const std::string& field) {
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+}
+
+void check_rect(const Rect& r, const std::string& name) {
+    check_finite(r.xmin, name + ".xmin");
+    check_finite(r.ymin, name + ".ymin");
+    check_finite(r.xmax, name + ".xmax");
+    check_finite(r.ymax, name + ".ymax");
+    if (r.xmax == r.xmin)
+        throw InputError(name + ".xmax", "must be greater than " + name + ".xmin: the " + name +
+                                             " has zero width (xmin = xmax = " + num(r.xmin) + ")");
+    if (r.xmax < r.xmin)
+        throw InputError(name + ".xmax", "must be greater than " + name + ".xmin (" +
+                                             num(r.xmax) + " < " + num(r.xmin) +
+                                             "): the rectangle is inverted");
+    if (r.ymax == r.ymin)
+        throw InputError(name + ".ymax", "must be greater than " + name + ".ymin: the " + name +
+                                             " has zero height (ymin = ymax = " + num(r.ymin) +
+                                             ")");
+    if (r.ymax < r.ymin)
+        throw InputError(name + ".ymax", "must be greater than " + name + ".ymin (" +
+                                             num(r.ymax) + " < " + num(r.ymin) +
+                                             "): the rectangle is inverted");
+}
+
+bool finite(const dmat3& m) {
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+std::vector<std::vector<double>> rows(const dmat3& m) {
+    return {{m[0][0], m[1][0], m[2][0]}, {m[0][1], m[1][1], m[2][1]}, {m[0][2], m[1][2], m[2][2]}};
+}
+
+}  // namespace
+
+// ---- [spec] ---------------------------------------------------------------------------------
+
+const Spec& WindowViewport::spec() {
+    static const Spec spec{
+        "window-viewport",
+        "Window to viewport through NDC",
+        "Windows, Viewports, NDC",
+        {
+            "Lw, Hw ← window width, height;  Lv, Hv ← viewport width, height",
+            "if Lw/Hw ≠ Lv/Hv: warn, shapes will be distorted",
+            "M_ndc ← [2/Lw 0 −(xw_max+xw_min)/Lw; 0 2/Hw −(yw_max+yw_min)/Hw; 0 0 1]",
+            "for each point P:  P_ndc ← M_ndc P           ▷ the window goes to [−1, 1]²",
+            "M_vp ← [Lv/2 0 (xv_max+xv_min)/2; 0 Hv/2 (yv_max+yv_min)/2; 0 0 1]",
+            "for each point:  P_device ← M_vp P_ndc       ▷ [−1, 1]² goes to the viewport",
+            "M ← M_vp · M_ndc                              ▷ window to device in one matrix",
+        },
+        {
+            {"aspect-match", "window and viewport have the same aspect ratio: no distortion"},
+            {"distortion", "the aspect ratios differ: x and y scale differently, shapes stretch"},
+            {"window-to-ndc", "the matrix taking the window to the NDC square [−1, 1]²"},
+            {"point-to-ndc", "one point mapped to NDC"},
+            {"ndc-to-viewport", "the matrix taking the NDC square to the viewport"},
+            {"point-to-device", "one point mapped from NDC to device coordinates"},
+            {"compose", "the two matrices multiplied: window to device in one step"},
+        },
+    };
+    return spec;
+}
+
+// ---- [validate] -----------------------------------------------------------------------------
+
+void WindowViewport::validate(const Input& in) {
+    check_rect(in.window, "window");
+    check_rect(in.viewport, "viewport");
+    for (std::size_t k = 0; k < in.points.size(); ++k) {
+        check_finite(in.points[k].x, "points[" + std::to_string(k) + "][0]");
+        check_finite(in.points[k].y, "points[" + std::to_string(k) + "][1]");
+    }
+    // Sizes, scales and shifts must stay finite too (1e308 − (−1e308) overflows; 2/1e-320 too).
+    for (const char* name : {"window", "viewport"}) {
+        const Rect& r = name[0] == 'w' ? in.window : in.viewport;
+        const dmat3 m = name[0] == 'w' ? ndc_from(r) : device_from(r);
+        if (!std::isfinite(width(r)) || !std::isfinite(height(r)) || !finite(m) ||
+            m[0][0] == 0 || m[1][1] == 0)
+            throw InputError(name, "is too large or too small to map (" + num(width(r)) + " × " +
+                                       num(height(r)) + ")");
+    }
+}
+
+WindowViewport::State WindowViewport::start(const Input& in) {
+    validate(in);
+    State s;
+    s.in = in;
+    return s;
+}
+
+// ---- [advance] ------------------------------------------------------------------------------
+
+// The algorithm proper: one step of the math. Kept apart from the narration below so that
+// running to completion (no StepInfo) costs about what the plain map() does.
+void WindowViewport::advance(State& s) {
+    s.last = s.phase;
+    const int n = static_cast<int>(s.in.points.size());
+    switch (s.phase) {
+        case Phase::Aspect:  // Compare the shapes of window and viewport
+            s.aspect_window = width(s.in.window) / height(s.in.window);
+            s.aspect_viewport = width(s.in.viewport) / height(s.in.viewport);
+            s.distorted = aspects_differ(s.aspect_window, s.aspect_viewport);
+            s.phase = Phase::NdcMatrix;
+            return;
+        case Phase::NdcMatrix:  // The window-to-NDC matrix
+            s.ndc_from_window = ndc_from(s.in.window);
+            s.ndc.reserve(s.in.points.size());
+            s.k = -1;
+            s.phase = n > 0 ? Phase::ToNdc : Phase::DeviceMatrix;
+            return;
+        case Phase::ToNdc:  // Map one point to NDC
+            ++s.k;
+            s.ndc.push_back(to_ndc(s.in.window, s.in.points[s.k]));
+            if (s.k + 1 == n) s.phase = Phase::DeviceMatrix;
+            return;
+        case Phase::DeviceMatrix:  // The NDC-to-viewport matrix
+            s.device_from_ndc = device_from(s.in.viewport);
+            s.device.reserve(s.in.points.size());
+            s.k = -1;
+            s.phase = n > 0 ? Phase::ToDevice : Phase::Compose;
+            return;
+        case Phase::ToDevice:  // Map one point from NDC to the device
+            ++s.k;
+            s.device.push_back(to_device(s.in.viewport, s.ndc[s.k]));
+            if (s.k + 1 == n) s.phase = Phase::Compose;
+            return;
+        case Phase::Compose:  // Window to device in one matrix
+            s.device_from_window = s.device_from_ndc * s.ndc_from_window;
+            s.phase = Phase::Done;
+            return;
+        case Phase::Done:
+            return;  // a finished machine stays finished
+    }
+}
+
+// ---- [narrate] ------------------------------------------------------------------------------
+
+namespace {
+
+std::string matrix_text(const dmat3& m) {
+    std::string t = "[";
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) t += (c ? " " : "") + num(m[c][r]);
+        t += r < 2 ? "; " : "]";
+    }
+    return t;
+}
+
+std::string matrix_tex(const dmat3& m) {
+    std::string t = "\\begin{bmatrix} ";
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) t += (c ? " & " : "") + tex(m[c][r]);
+        t += r < 2 ? " \\\\ " : " \\end{bmatrix}";
+    }
+    return t;
+}
+
+// "2", "(−3)": a number after an operator.
+std::string operand(double v) { return v < 0 ? "(" + num(v) + ")" : num(v); }
+
+bool inside_ndc(dvec2 p) { return std::fabs(p.x) <= 1 && std::fabs(p.y) <= 1; }
+
+std::string point_name(int k) { return "P" + std::to_string(k); }
+
+void narrate_aspect(const WindowViewport::State& s, StepInfo& info) {
+    const Rect &w = s.in.window, &v = s.in.viewport;
+    const double sx = width(v) / width(w), sy = height(v) / height(w);
+    const std::string sizes = "Window " + num(width(w)) + " × " + num(height(w)) +
+                              " (aspect Lw/Hw = " + num(s.aspect_window, 4) + "), viewport " +
+                              num(width(v)) + " × " + num(height(v)) + " (aspect Lv/Hv = " +
+                              num(s.aspect_viewport, 4) + ")";
+    info.math = "\\frac{L_w}{H_w} = \\frac{" + tex(width(w)) + "}{" + tex(height(w)) +
+                "} = " + tex(s.aspect_window, 4) + (s.distorted ? " \\ne " : " = ") +
+                tex(s.aspect_viewport, 4) + " = \\frac{" + tex(width(v)) + "}{" + tex(height(v)) +
+                "} = \\frac{L_v}{H_v}";
+    if (s.distorted) {
+        info.event = "distortion";
+        info.line = kLineAspect;
+        info.narration = sizes + ": the aspect ratios differ. x will be scaled by Lv/Lw = " +
+                         num(sx, 4) + " but y by Hv/Hw = " + num(sy, 4) +
+                         ", so shapes come out stretched (a circle becomes an ellipse).";
+    } else {
+        info.event = "aspect-match";
+        info.line = kLineAspect;
+        info.narration = sizes + ": the aspect ratios agree, both axes scale by " + num(sx, 4) +
+                         " and shapes keep their proportions.";
+    }
+}
+
+void narrate_ndc_matrix(const WindowViewport::State& s, StepInfo& info) {
+    const Rect& w = s.in.window;
+    const dmat3& m = s.ndc_from_window;
+    info.event = "window-to-ndc";
+    info.line = kLineNdcMatrix;
+    info.narration = "Window to NDC: scale x by 2/Lw = 2/" + num(width(w)) + " = " + num(m[0][0]) +
+                     " and y by 2/Hw = 2/" + num(height(w)) + " = " + num(m[1][1]) +
+                     ", then shift by −(xw_max + xw_min)/Lw = " + num(m[2][0]) +
+                     " and −(yw_max + yw_min)/Hw = " + num(m[2][1]) + ": M_ndc = " +
+                     matrix_text(m) + ". The corners " + num(dvec2(w.xmin, w.ymin)) + " and " +
+                     num(dvec2(w.xmax, w.ymax)) + " go to (−1, −1) and (1, 1).";
+    info.math =
+        "M_{ndc} = \\begin{bmatrix} \\frac{2}{L_w} & 0 & -\\frac{x_{w,max} + x_{w,min}}{L_w} "
+        "\\\\ 0 & \\frac{2}{H_w} & -\\frac{y_{w,max} + y_{w,min}}{H_w} \\\\ 0 & 0 & 1 "
+        "\\end{bmatrix} = " +
+        matrix_tex(m);
+}
+
+void narrate_to_ndc(const WindowViewport::State& s, StepInfo& info) {
+    const Rect& w = s.in.window;
+    const dvec2 p = s.in.points[s.k], q = s.ndc[s.k];
+    info.event = "point-to-ndc";
+    info.line = kLineToNdc;
+    info.narration = point_name(s.k) + " = " + num(p) + ": x_ndc = 2·(" + num(p.x) + " − " +
+                     operand(w.xmin) + ")/" + num(width(w)) + " − 1 = " + num(q.x) +
+                     ", y_ndc = 2·(" + num(p.y) + " − " + operand(w.ymin) + ")/" + num(height(w)) +
+                     " − 1 = " + num(q.y) + ", so " + point_name(s.k) + "_ndc = " + num(q) +
+                     (inside_ndc(q) ? "."
+                                    : ", outside [−1, 1]²: the point lies outside the window "
+                                      "(mapping does not clip).");
+    info.math = "M_{ndc} \\begin{bmatrix} " + tex(p.x) + " \\\\ " + tex(p.y) +
+                " \\\\ 1 \\end{bmatrix} = \\begin{bmatrix} " + tex(q.x) + " \\\\ " + tex(q.y) +
+                " \\\\ 1 \\end{bmatrix}";
+}
+
+void narrate_device_matrix(const WindowViewport::State& s, StepInfo& info) {
+    const Rect& v = s.in.viewport;
+    const dmat3& m = s.device_from_ndc;
+    info.event = "ndc-to-viewport";
+    info.line = kLineDeviceMatrix;
+    info.narration = "NDC to viewport: scale x by Lv/2 = " + num(width(v)) +
+                     "/2 = " + num(m[0][0]) + " and y by Hv/2 = " + num(height(v)) +
+                     "/2 = " + num(m[1][1]) + ", then shift to the viewport's centre " +
+                     num(dvec2(m[2][0], m[2][1])) + ": M_vp = " + matrix_text(m) +
+                     ". (−1, −1) and (1, 1) go to " + num(dvec2(v.xmin, v.ymin)) + " and " +
+                     num(dvec2(v.xmax, v.ymax)) + ".";
+    info.math = "M_{vp} = \\begin{bmatrix} \\frac{L_v}{2} & 0 & \\frac{x_{v,max} + x_{v,min}}{2} "
+                "\\\\ 0 & \\frac{H_v}{2} & \\frac{y_{v,max} + y_{v,min}}{2} \\\\ 0 & 0 & 1 "
+                "\\end{bmatrix} = " + matrix_tex(m);
+}
+
+void narrate_to_device(const WindowViewport::State& s, StepInfo& info) {
+    const Rect& v = s.in.viewport;
+    const dvec2 q = s.ndc[s.k], d = s.device[s.k];
+    info.event = "point-to-device";
+    info.line = kLineToDevice;
+    info.narration = point_name(s.k) + "_ndc = " + num(q) + ": x_d = " + num(v.xmin) + " + (" +
+                     num(q.x) + " + 1)·" + num(width(v)) + "/2 = " + num(d.x) + ", y_d = " +
+                     num(v.ymin) + " + (" + num(q.y) + " + 1)·" + num(height(v)) + "/2 = " +
+                     num(d.y) + ", so " + point_name(s.k) + "_device = " + num(d) + ".";
+    info.math = "M_{vp} \\begin{bmatrix} " + tex(q.x) + " \\\\ " + tex(q.y) +
+                " \\\\ 1 \\end{bmatrix} = \\begin{bmatrix} " + tex(d.x) + " \\\\ " + tex(d.y) +
+                " \\\\ 1 \\end{bmatrix}";
+}
+
+void narrate_compose(const WindowViewport::State& s, StepInfo& info) {
+    const dmat3& m = s.device_from_window;
+    info.event = "compose";
+    info.line = kLineCompose;
+    info.narration = "Window to device in one matrix: M = M_vp · M_ndc = " + matrix_text(m) +
+                     ", i.e. x_d = " + num(m[0][0]) + "·x + " + operand(m[2][0]) + ", y_d = " +
+                     num(m[1][1]) + "·y + " + operand(m[2][1]) +
+                     ": a scale by (Lv/Lw, Hv/Hw) and a shift, applied once per point.";
+    info.math = "M = M_{vp} M_{ndc} = " + matrix_tex(s.device_from_ndc) +
+                matrix_tex(s.ndc_from_window) + " = " + matrix_tex(m);
+}
+
+void fill_vars(const WindowViewport::State& s, StepInfo& info) {
+    const Rect &w = s.in.window, &v = s.in.viewport;
+    info.vars = {{"Lw", width(w)},
+                 {"Hw", height(w)},
+                 {"Lv", width(v)},
+                 {"Hv", height(v)},
+                 {"aspect_window", s.aspect_window},
+                 {"aspect_viewport", s.aspect_viewport},
+                 {"distorted", s.distorted}};
+    if (s.last >= Phase::NdcMatrix) info.vars.push_back({"M_ndc", rows(s.ndc_from_window)});
+    if (s.last >= Phase::DeviceMatrix) info.vars.push_back({"M_vp", rows(s.device_from_ndc)});
+    if (s.last == Phase::Compose) info.vars.push_back({"M", rows(s.device_from_window)});
+    if (s.last == Phase::ToNdc || s.last == Phase::ToDevice) {
+        info.vars.push_back({"k", static_cast<long long>(s.k)});
+        info.vars.push_back({"P", vec(s.in.points[s.k])});
+        info.vars.push_back({"P_ndc", vec(s.ndc[s.k])});
+        if (s.last == Phase::ToDevice) info.vars.push_back({"P_device", vec(s.device[s.k])});
+    }
+}
+
+}  // namespace
+
+// What the step just taken means, told with its numbers. `s` is the state after the step.
+void WindowViewport::narrate(const State& s, StepInfo& info) {
+    info.math.clear();
+    switch (s.last) {
+        case Phase::Aspect: narrate_aspect(s, info); break;
+        case Phase::NdcMatrix: narrate_ndc_matrix(s, info); break;
+        case Phase::ToNdc: narrate_to_ndc(s, info); break;
+        case Phase::DeviceMatrix: narrate_device_matrix(s, info); break;
+        case Phase::ToDevice: narrate_to_device(s, info); break;
+        case Phase::Compose:
+        case Phase::Done: narrate_compose(s, info); break;
+    }
+    fill_vars(s, info);
+}
+
+void WindowViewport::step(State& s, StepInfo* info) {
+    if (s.phase == Phase::Done) return;
+    advance(s);
+    if (info) narrate(s, *info);
+}
+
+// ---- [result and map] -----------------------------------------------------------------------
+
+WindowViewport::Result WindowViewport::result(const State& s) {
+    Result r;
+    r.ndc = s.ndc;
+    r.device = s.device;
+    r.ndc_from_window = s.ndc_from_window;
+    r.device_from_ndc = s.device_from_ndc;
+    r.device_from_window = s.device_from_window;
+    r.distorted = s.distorted;
+    r.aspect_window = s.aspect_window;
+    r.aspect_viewport = s.aspect_viewport;
+    return r;
+}
+
+// Flattened like run_to_end, so that the comparison is between two fully inlined loops.
+[[gnu::flatten]] WindowViewport::Result WindowViewport::map(const Input& in) {
+    Result r;
+    r.aspect_window = width(in.window) / height(in.window);
+    r.aspect_viewport = width(in.viewport) / height(in.viewport);
+    r.distorted = aspects_differ(r.aspect_window, r.aspect_viewport);
+    r.ndc_from_window = ndc_from(in.window);
+    r.device_from_ndc = device_from(in.viewport);
+    r.ndc.reserve(in.points.size());
+    r.device.reserve(in.points.size());
+    for (const dvec2 p : in.points) r.ndc.push_back(to_ndc(in.window, p));
+    for (const dvec2 q : r.ndc) r.device.push_back(to_device(in.viewport, q));
+    r.device_from_window = r.device_from_ndc * r.ndc_from_window;
+    return r;
+}
+
+// ---- [draw] ---------------------------------------------------------------------------------
+
+// The window at its world coordinates on the left; to its right the NDC square and then the
+// viewport, each scaled (keeping its own proportions) to the window's height, so that a
+// distorting map shows as panels of different shapes and a stretched image of the points.
+// Each panel sits a little higher than the one before, so the lines from points to their
+// images slant and do not run along one another.
+void WindowViewport::draw(const State& s, Scene& scene) {
+    const Rect &w = s.in.window, &v = s.in.viewport;
+    const double h = height(w), gap = 0.5 * std::max(h, 0.25 * width(w)), rise = 0.4 * h;
+    const double ndc_x0 = w.xmax + gap, vp_x0 = ndc_x0 + h + gap, vp_scale = h / height(v);
+    auto ndc_at = [&](dvec2 q) {
+        return dvec2(ndc_x0 + (q.x + 1) / 2 * h, w.ymin + rise + (q.y + 1) / 2 * h);
+    };
+    auto device_at = [&](dvec2 d) {
+        return dvec2(vp_x0 + (d.x - v.xmin) * vp_scale,
+                     w.ymin + 2 * rise + (d.y - v.ymin) * vp_scale);
+    };
+    auto rect = [](dvec2 lo, dvec2 hi) {
+        return std::vector<dvec2>{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+    };
+    const dvec2 ndc_lo = ndc_at({-1, -1}), ndc_hi = ndc_at({1, 1});
+    const dvec2 vp_lo = device_at({v.xmin, v.ymin}), vp_hi = device_at({v.xmax, v.ymax});
+
+    // The three frames and their captions.
+    scene.polygons.push_back(
+        {rect({w.xmin, w.ymin}, {w.xmax, w.ymax}), {Role::Window, 2.0f}, true, true});
+    scene.polygons.push_back({rect(ndc_lo, ndc_hi), {Role::Neutral, 1.5f}, true, false});
+    scene.segments.push_back(
+        {ndc_at({-1, 0}), ndc_at({1, 0}), "", {Role::Construction, 1.0f, true}, false});
+    scene.segments.push_back(
+        {ndc_at({0, -1}), ndc_at({0, 1}), "", {Role::Construction, 1.0f, true}, false});
+    scene.polygons.push_back({rect(vp_lo, vp_hi), {Role::Window, 2.0f}, true, true});
+    auto range = [](const Rect& r) {
+        return "[" + num(r.xmin) + ", " + num(r.xmax) + "] × [" + num(r.ymin) + ", " + num(r.ymax) +
+               "]";
+    };
+    scene.labels.push_back(
+        {{(w.xmin + w.xmax) / 2, w.ymax}, "window (world) " + range(w), {Role::Window}});
+    scene.labels.push_back(
+        {{(ndc_lo.x + ndc_hi.x) / 2, ndc_hi.y}, "NDC [−1, 1] × [−1, 1]", {Role::Neutral}});
+    scene.labels.push_back(
+        {{(vp_lo.x + vp_hi.x) / 2, vp_hi.y}, "viewport (device) " + range(v), {Role::Window}});
+    if (s.phase != Phase::Aspect && s.distorted)
+        scene.labels.push_back({{(vp_lo.x + vp_hi.x) / 2, vp_lo.y},
+                                "distorted: aspect " + num(s.aspect_window, 4) + " ≠ " +
+                                    num(s.aspect_viewport, 4),
+                                {Role::Discarded}});
+
+    // The points, their images, and the lines joining them.
+    const int n = static_cast<int>(s.in.points.size());
+    const int active = s.phase == Phase::Done ? -1 : s.k;
+    const bool to_ndc = s.last == Phase::ToNdc, to_device = s.last == Phase::ToDevice;
+    if (n >= 3) {  // the points in order, so that a shape's distortion shows
+        scene.polygons.push_back({s.in.points, {Role::Subject, 1.5f}, true, false});
+        if (static_cast<int>(s.ndc.size()) == n) {
+            std::vector<dvec2> a, b;
+            for (dvec2 q : s.ndc) a.push_back(ndc_at(q));
+            scene.polygons.push_back({a, {Role::Subject, 1.5f}, true, false});
+            if (static_cast<int>(s.device.size()) == n) {
+                for (dvec2 d : s.device) b.push_back(device_at(d));
+                scene.polygons.push_back({b, {Role::Subject, 1.5f}, true, false});
+            }
+        }
+    }
+    for (int k = 0; k < n; ++k) {
+        const bool now_ndc = to_ndc && k == active, now_device = to_device && k == active;
+        const dvec2 p = s.in.points[k];
+        if (k < static_cast<int>(s.ndc.size())) {
+            const dvec2 q = ndc_at(s.ndc[k]);
+            scene.segments.push_back(
+                {p,
+                 q,
+                 "",
+                 {now_ndc ? Role::Active : Role::Construction, now_ndc ? 2.0f : 1.0f, true},
+                 now_ndc});
+            scene.points.push_back({q, now_ndc ? point_name(k) + "_ndc = " + num(s.ndc[k], 4) : "",
+                                    {now_ndc || now_device ? Role::Active : Role::Kept}, 5.0f});
+        }
+        if (k < static_cast<int>(s.device.size())) {
+            const dvec2 q = ndc_at(s.ndc[k]), d = device_at(s.device[k]);
+            scene.segments.push_back(
+                {q,
+                 d,
+                 "",
+                 {now_device ? Role::Active : Role::Construction, now_device ? 2.0f : 1.0f, true},
+                 now_device});
+            scene.points.push_back({d,
+                                    now_device ? point_name(k) + "_device = " + num(s.device[k], 4)
+                                               : point_name(k) + "'",
+                                    {now_device ? Role::Active : Role::Kept},
+                                    5.0f});
+        }
+        scene.points.push_back({p, point_name(k), {now_ndc ? Role::Active : Role::Subject}, 5.0f});
+        const std::string K = std::to_string(k);
+        scene.handles.push_back({p, point_name(k), "/points/" + K + "/0", "/points/" + K + "/1"});
+    }
+    scene.handles.push_back(
+        {{w.xmin, w.ymin}, "window (xmin, ymin)", "/window/xmin", "/window/ymin"});
+    scene.handles.push_back(
+        {{w.xmax, w.ymax}, "window (xmax, ymax)", "/window/xmax", "/window/ymax"});
+}
+
+}  // namespace cg
