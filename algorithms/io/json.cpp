@@ -1,6 +1,8 @@
 #include "io/json.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "core/format.hpp"
 
@@ -143,6 +145,8 @@ std::optional<double> Reader::optional_number(const char* key) const {
 
 long long Reader::integer(const char* key) const {
     const json& v = get(key);
+    if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::uint64_t(std::numeric_limits<long long>::max()))
+        throw InputError(field(key), "is too large, got " + describe(v));
     if (v.is_number_integer()) return v.get<long long>();
     if (v.is_number_float()) {
         double d = v.get<double>();

@@ -24,6 +24,8 @@ TEST_CASE("json reader: errors name the field and the reason", "[json]") {
     CHECK(message([&] { r.only({"a", "p"}); }) == "n: is not a known field (expected: a, p)");
     CHECK(message([&] { cg::Reader(json::array()); }) == "the input must be a JSON object, got an array ([])");
     CHECK(r.integer("n") == 3);
+    CHECK_THROWS_WITH(cg::Reader(json::parse(R"({"w": 18446744073709551615})")).integer("w"),
+                      "w: is too large, got 18446744073709551615");
 }
 
 TEST_CASE("json reader: non-finite numbers are refused", "[json]") {
