@@ -9,7 +9,7 @@ namespace cg {
 
 Checkpoint checkpoint_from_json(const json& j, const Registry& registry) {
     Reader r(j);
-    r.only({"algorithm", "input", "step", "view"});
+    r.only({"algorithm", "input", "step", "view", "lesson", "preset", "exam_seed"});
     Checkpoint c;
     c.algorithm = r.string("algorithm");
     if (!registry.find(c.algorithm))
@@ -28,12 +28,23 @@ Checkpoint checkpoint_from_json(const json& j, const Registry& registry) {
         if (!(view.zoom > 0)) throw InputError("view.zoom", "must be positive");
         c.view = view;
     }
+    // Whether the lesson exists is the viewer's business: it may have been renamed since.
+    if (r.has("lesson")) c.lesson = r.string("lesson");
+    if (r.has("preset")) c.preset = r.string("preset");
+    if (r.has("exam_seed")) {
+        const long long seed = r.integer("exam_seed");
+        if (seed < 0) throw InputError("exam_seed", "must be 0 or more");
+        c.exam_seed = static_cast<std::uint64_t>(seed);
+    }
     return c;
 }
 
 json checkpoint_to_json(const Checkpoint& c) {
     json j{{"algorithm", c.algorithm}, {"input", c.input}, {"step", c.step}};
     if (c.view) j["view"] = json{{"center", to_json(c.view->center)}, {"zoom", c.view->zoom}};
+    if (!c.lesson.empty()) j["lesson"] = c.lesson;
+    if (!c.preset.empty()) j["preset"] = c.preset;
+    if (c.exam_seed) j["exam_seed"] = *c.exam_seed;
     return j;
 }
 

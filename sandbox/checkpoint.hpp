@@ -1,12 +1,15 @@
 // A checkpoint: exactly what a student is looking at, in a small JSON file.
 //
 //     {"algorithm": "liang-barsky", "input": {...}, "step": 3,
-//      "view": {"center": [x, y], "zoom": pixels_per_unit}}
+//      "view": {"center": [x, y], "zoom": pixels_per_unit},
+//      "lesson": "liang-barsky", "preset": "a segment crossing two edges", "exam_seed": 7}
 //
 // The viewer saves and opens them; `cgsandbox render --checkpoint FILE` draws them, so a
-// student can send the exact picture they have. "view" is optional (fit to the scene).
+// student can send the exact picture they have. "view" is optional (fit to the scene); so are
+// the open lesson, the preset it loaded, and the exam problem being practised (its seed).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -28,6 +31,9 @@ struct Checkpoint {
     json input;
     std::size_t step = 0;
     std::optional<View2> view;  // none: fit the scene into the canvas
+    std::string lesson;         // the open lesson's id; empty: none
+    std::string preset;         // the lesson preset the input came from; empty: none
+    std::optional<std::uint64_t> exam_seed;  // exam practice on make_exam(algorithm, seed)
 };
 
 // Reads and checks a checkpoint (the algorithm must exist; its input is checked when run).

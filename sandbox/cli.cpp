@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "checkpoint.hpp"
+#include "hsr/complexity.hpp"
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
 #include "io/registry.hpp"
@@ -105,6 +106,14 @@ LessonLibrary load_lesson_library(const Registry& registry) {
     return load_lessons(default_lessons_dir(), registry);
 }
 
+// A preset of `lesson` by name; a wrong name lists the right ones.
+const LessonPreset& find_preset(const Lesson& lesson, const std::string& name) {
+    if (const LessonPreset* preset = lesson.preset(name)) return *preset;
+    std::string names;
+    for (const auto& p : lesson.presets) names += (names.empty() ? "\"" : ", \"") + p.name + "\"";
+    throw UserError{lesson.file, "no preset \"" + name + "\" (presets: " + names + ")"};
+}
+
 struct WorkedOptions {
     std::string id, input_path, preset, format = "md", out_path;
 };
@@ -118,15 +127,10 @@ int cmd_worked(const Registry& registry, const WorkedOptions& o) {
         const LessonLibrary lessons = load_lesson_library(registry);
         const Lesson* lesson = lessons.for_algorithm(o.id);
         if (!lesson) throw UserError{"", "no lesson for " + o.id + ", so no presets"};
-        const LessonPreset* preset = lesson->preset(o.preset);
-        if (!preset) {
-            std::string names;
-            for (const auto& p : lesson->presets) names += (names.empty() ? "\"" : ", \"") + p.name + "\"";
-            throw UserError{lesson->file, "no preset \"" + o.preset + "\" (presets: " + names + ")"};
-        }
-        input = preset->input;
+        const LessonPreset& preset = find_preset(*lesson, o.preset);
+        input = preset.input;
         source = lesson->file;
-        subtitle = preset->name;
+        subtitle = preset.name;
     } else {
         source = o.input_path.empty() ? "example input" : source_name(o.input_path);
         input = load_input(algorithm, o.input_path);
@@ -182,13 +186,52 @@ int cmd_lessons(const Registry& registry, bool check) {
 
 struct RenderOptions {
     std::string id, input_path, checkpoint_path, out_path, size = "800x600";
-    long long step = -1;  // -1: the end of the run
+    std::string lesson, preset;
+    std::optional<std::uint64_t> exam_seed;
+    long long step = -1;  // -1: the end of the run (in exam practice: step 0)
     bool full_ui = false;
 };
+
+// --lesson ID [--preset NAME]: the lesson's algorithm on the preset (default: its first), with
+// the lesson open; --preset alone takes the algorithm's lesson, as `worked` does.
+void apply_lesson(const Registry& registry, const RenderOptions& o, Checkpoint& c,
+                  std::string& source) {
+    const LessonLibrary lessons = load_lesson_library(registry);
+    const Lesson* lesson = nullptr;
+    if (!o.lesson.empty()) {
+        lesson = lessons.find(o.lesson);
+        if (!lesson) {
+            std::string hint = lessons.errors.empty()
+                                   ? "`cgsandbox lessons` lists them"
+                                   : "`cgsandbox lessons --check` lists them and the broken files";
+            throw UserError{"", "no lesson \"" + o.lesson + "\"; " + hint};
+        }
+        if (!o.id.empty() && o.id != lesson->algorithm)
+            throw UserError{"", "lesson \"" + o.lesson + "\" is about " + lesson->algorithm +
+                                    ", not " + o.id};
+    } else {
+        lesson = lessons.for_algorithm(o.id);
+        if (!lesson) throw UserError{"", "no lesson for " + o.id + ", so no presets"};
+    }
+    c.algorithm = lesson->algorithm;
+    c.lesson = lesson->id;
+    if (!o.input_path.empty()) {
+        if (!o.preset.empty()) throw UserError{"", "give --input or --preset, not both"};
+        return;  // the lesson beside the student's own input
+    }
+    const LessonPreset& preset =
+        o.preset.empty() ? lesson->presets.front() : find_preset(*lesson, o.preset);
+    c.input = preset.input;
+    c.preset = preset.name;
+    source = lesson->file;
+}
 
 int cmd_render(const Registry& registry, const RenderOptions& o) {
     Checkpoint c;
     std::string source;
+    const bool studying = !o.lesson.empty() || !o.preset.empty() || o.exam_seed;
+    if (!o.checkpoint_path.empty() && studying)
+        throw UserError{"", "--checkpoint carries its own lesson and exam; give it alone"};
     if (!o.checkpoint_path.empty()) {
         source = source_name(o.checkpoint_path);
         try {
@@ -198,12 +241,28 @@ int cmd_render(const Registry& registry, const RenderOptions& o) {
         }
         if (o.step >= 0) c.step = static_cast<std::size_t>(o.step);
     } else {
-        if (o.id.empty()) throw UserError{"", "render needs an algorithm ID or --checkpoint FILE"};
-        const Algorithm& algorithm = find_algorithm(registry, o.id);
-        source = o.input_path.empty() ? "example input" : source_name(o.input_path);
+        if (o.id.empty() && o.lesson.empty())
+            throw UserError{"", "render needs an algorithm ID, --lesson ID or --checkpoint FILE"};
         c.algorithm = o.id;
-        c.input = load_input(algorithm, o.input_path);
+        if (!o.lesson.empty() || !o.preset.empty()) apply_lesson(registry, o, c, source);
+        const Algorithm& algorithm = find_algorithm(registry, c.algorithm);
+        if (source.empty()) {
+            source = o.input_path.empty() ? "example input" : source_name(o.input_path);
+            c.input = load_input(algorithm, o.input_path);
+        }
         c.step = o.step < 0 ? kMaxSteps : static_cast<std::size_t>(o.step);
+        if (o.exam_seed) {  // the problem's own input, its solution hidden unless --step
+            if (!o.input_path.empty() || !c.preset.empty())
+                throw UserError{"", "--exam makes its own input; give no --input or --preset"};
+            try {
+                c.input = make_exam(algorithm, *o.exam_seed).input;
+            } catch (const InputError& e) {
+                throw UserError{"", e.what()};
+            }
+            c.exam_seed = o.exam_seed;
+            c.step = o.step < 0 ? 0 : static_cast<std::size_t>(o.step);
+            source = "exam problem " + std::to_string(*o.exam_seed);
+        }
     }
     int width = 0, height = 0;
     char x = 0, extra = 0;
@@ -259,6 +318,12 @@ int cli_main(int argc, char** argv) {
     render->add_option("--out,-o", ro.out_path, "Output PNG file")->required();
     render->add_option("--size", ro.size, "Image size WxH (default 800x600)");
     render->add_flag("--full", ro.full_ui, "The whole viewer window, not only the canvas");
+    render->add_option("--lesson,-l", ro.lesson,
+                       "Open this lesson (see `lessons`) on its first preset; with --full its text "
+                       "is shown");
+    render->add_option("--preset,-p", ro.preset, "A preset of the lesson (or the algorithm's lesson)");
+    render->add_option("--exam,-e", ro.exam_seed,
+                       "Exam practice on the problem with this seed (solution hidden unless --step)");
 
     WorkedOptions wo;
     auto* worked = app.add_subcommand(
@@ -284,6 +349,16 @@ int cli_main(int argc, char** argv) {
     auto* lessons = app.add_subcommand("lessons", "List the lessons in course order; report broken files");
     lessons->add_flag("--check", check_lessons, "Exit 2 if any lesson file is broken");
 
+    std::string topic;
+    std::vector<long long> sides{8, 16, 32, 64};
+    std::vector<int> counts{1, 4, 16};
+    int trials = 5;
+    auto* complexity = app.add_subcommand("complexity", "Count the basic operations on growing random scenes");
+    complexity->add_option("TOPIC", topic, "hsr (hidden-surface removal)")->required()->check(CLI::IsMember({"hsr"}));
+    complexity->add_option("--sizes", sides, "Screen sides in pixels (default 8 16 32 64)")->check(CLI::Range(1, 1024));
+    complexity->add_option("--polygons", counts, "Polygon counts (default 1 4 16)")->check(CLI::Range(0, 1000));
+    complexity->add_option("--trials", trials, "Random scenes per row (default 5)")->check(CLI::Range(1, 1000));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -303,6 +378,10 @@ int cli_main(int argc, char** argv) {
         if (*worked) return cmd_worked(registry, wo);
         if (*exam) return cmd_exam(registry, eo);
         if (*lessons) return cmd_lessons(registry, check_lessons);
+        if (*complexity) {
+            std::cout << hsr::complexity_table(hsr::complexity(sides, counts, trials, 1));
+            return 0;
+        }
         return viewer::run_viewer(registry, std::nullopt);
     } catch (const UserError& e) {
         std::cerr << "cgsandbox: " << (e.source.empty() ? "" : e.source + ": ") << e.message << "\n";

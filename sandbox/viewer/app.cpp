@@ -88,10 +88,14 @@ int run_viewer(const Registry& registry, const std::optional<Checkpoint>& initia
 
     Session s(registry);
     s.fonts = host->fonts();
-    if (initial)
+    s.lessons = load_lessons(default_lessons_dir(), registry);  // broken files: listed in the UI
+    if (initial) {
         s.load(*initial);
-    else if (!registry.all().empty())
+    } else if (!registry.all().empty()) {
         s.choose(registry.all().front());
+        // A student starts from the course: the lesson list, the first algorithm beside it.
+        if (!s.lessons.lessons.empty() || !s.lessons.errors.empty()) s.show_tab(Tab::Lessons);
+    }
 
     bool running = true;
     int busy_frames = 3;  // redraw a few frames after any event so hover effects settle

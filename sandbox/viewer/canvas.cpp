@@ -26,6 +26,8 @@ View2 fit_view(const Scene& scene, glm::dvec2 size) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     };
+    for (const PixelGrid2& g : scene.grids)
+        add(g.origin), add(g.origin + glm::dvec2(g.width, g.height));
     for (const Polygon2& poly : scene.polygons)
         for (glm::dvec2 p : poly.points) add(p);
     for (const Segment2& s : scene.segments) add(s.a), add(s.b);
@@ -172,6 +174,8 @@ Caption make_caption(const ScreenMap& map, const Session& s, bool interactive) {
     if (const StepInfo* info = s.last_step(); info && !info->event.empty())
         c.detail += "  ·  " + info->event;
     if (!s.input_error.empty()) c.detail += "  ·  input refused: showing the last good run";
+    if (s.solution_hidden())  // its length would hint at the answer
+        c.detail = "exam problem " + std::to_string(s.exam.problem.seed) + "  ·  solution hidden";
     if (interactive) c.hint = "wheel: zoom  ·  right-drag: pan  ·  drag ■ to edit the input";
 
     const Fonts& f = s.fonts;

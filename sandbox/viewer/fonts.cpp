@@ -10,17 +10,26 @@ namespace {
 
 constexpr const char* kSansPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr const char* kMonoPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+constexpr const char* kBoldPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
 
 // Unicode blocks the course's text uses. The atlas keeps a pointer to this array until it is
 // built, so it must outlive the call: a constant with static storage does.
 constexpr ImWchar kGlyphRanges[] = {
     0x0020, 0x024F,  // Basic Latin, Latin-1 (² ³ ·), Latin Extended
+    0x02B0, 0x02FF,  // Spacing Modifier Letters (superscripts ʰ ʲ ʳ ˢ ˣ)
     0x0370, 0x03FF,  // Greek (θ φ γ)
-    0x2000, 0x206F,  // General Punctuation (– — …)
+    0x1D00, 0x1DBF,  // Phonetic Extensions (superscripts ᵃ ᵏ ᵀ, subscript ᵢ)
+    0x2000, 0x206F,  // General Punctuation (– — … • thin and em spaces)
     0x2070, 0x209F,  // Superscripts and Subscripts (₀ ₁ ⁿ)
+    0x2100, 0x214F,  // Letterlike Symbols (ℝ ℓ)
     0x2190, 0x21FF,  // Arrows (← →)
     0x2200, 0x22FF,  // Mathematical Operators (− ≤ ≥ ∞)
+    0x2300, 0x23FF,  // Miscellaneous Technical (⌈ ⌉)
     0x25A0, 0x25FF,  // Geometric Shapes (▷ ■)
+    0x2600, 0x26FF,  // Miscellaneous Symbols (⚠)
+    0x2700, 0x27BF,  // Dingbats (✓ ✗)
+    0x27C0, 0x27EF,  // Miscellaneous Mathematical Symbols-A (⟨ ⟩)
+    0x2C60, 0x2C7F,  // Latin Extended-C (subscript ⱼ)
     0,
 };
 
@@ -57,10 +66,16 @@ Fonts setup_fonts_and_style() {
         fonts.mono = add_font(kMonoPath, 14.0f);
         fonts.large = add_font(kSansPath, 19.0f);
         fonts.small = add_font(kSansPath, 13.0f);
+        // Headings; without the bold face they are set in the regular one.
+        fonts.bold =
+            std::filesystem::exists(kBoldPath, error) ? add_font(kBoldPath, 16.0f) : fonts.ui;
+        fonts.title =
+            std::filesystem::exists(kBoldPath, error) ? add_font(kBoldPath, 19.0f) : fonts.large;
     }
-    if (!fonts.ui || !fonts.mono || !fonts.large || !fonts.small) {
+    if (!fonts.ui || !fonts.mono || !fonts.large || !fonts.small || !fonts.bold || !fonts.title) {
         io.Fonts->Clear();
-        fonts.ui = fonts.mono = fonts.large = fonts.small = io.Fonts->AddFontDefault();
+        fonts.ui = fonts.mono = fonts.large = fonts.small = fonts.bold = fonts.title =
+            io.Fonts->AddFontDefault();
     }
     return fonts;
 }

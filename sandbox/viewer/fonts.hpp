@@ -11,10 +11,12 @@ struct Fonts {
     ImFont* mono = nullptr;   // pseudocode, variable names
     ImFont* large = nullptr;  // the current narration
     ImFont* small = nullptr;  // tick labels, the canvas caption's second line
+    ImFont* bold = nullptr;   // lesson section titles, the exam's field names
+    ImFont* title = nullptr;  // a lesson's title
 };
 
 // Adds the DejaVu fonts to the current ImGui context's atlas with the glyphs the narrations
-// use (− ≤ ≥ ← → · ▷ θ φ ² ₀ …); falls back to ImGui's built-in font when they are missing.
+// use (− ≤ ≥ ← → · ▷ θ φ ² ₀ ✓ ✗ ⌈ ⌉ …); falls back to ImGui's built-in font when they are missing.
 // Also sets the light style that matches the white canvas.
 Fonts setup_fonts_and_style();
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 #include "core/scene.hpp"
 
@@ -79,5 +80,23 @@ constexpr std::uint32_t kBreakpoint = 0xd62728ff;
 constexpr std::uint32_t kErrorText = 0xd62728ff;
 constexpr std::uint32_t kOkText = 0x2a7d2aff;
 constexpr std::uint32_t kChangedValue = 0xc25400ff;  // a variable this step changed
+constexpr std::uint32_t kMathText = 0x0b5e6bff;      // the step's formula, under the narration
+
+// Lessons and exam practice. The GUI tests look for kSectionTitle in the lesson panel and for
+// kExamQuestion behind the exam's question, so both differ from everything else on screen.
+constexpr std::uint32_t kSectionTitle = 0x1f4e8cff;    // a lesson's section headings
+constexpr std::uint32_t kNoteBackground = 0xe4effaff;  // "What this means: …"
+constexpr std::uint32_t kNoteAccent = 0x1f77b4ff;      // ... its left bar and label
+constexpr std::uint32_t kExamQuestion = 0xfff3c4ff;    // the question's box: exam paper yellow
+constexpr std::uint32_t kWarningText = 0xa15c00ff;     // broken lesson files
+constexpr std::uint32_t kCheckButton = 0x2e7d32ff;     // the exam's Check
+
+// How much the exam weighs a lesson's topic: the badge beside its title.
+constexpr std::uint32_t exam_weight_rgba(std::string_view weight) {
+    if (weight == "high") return 0xc62828ff;
+    if (weight == "medium") return 0xe07b00ff;
+    if (weight == "low") return 0x3a7fc1ff;
+    return 0x9a9a9aff;  // none
+}
 
 }  // namespace cg::viewer

@@ -47,6 +47,10 @@ void draw_algorithm_panel(Session& s) {
     ImGui::SameLine();
     if (ImGui::Button("Reset view")) s.canvas.fit_pending = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Fit the canvas to the scene");
+    if (const Lesson* l = s.algorithm ? s.lessons.for_algorithm(s.algorithm->spec->id) : nullptr) {
+        if (ImGui::Button("Read the lesson")) s.open_lesson(*l);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", l->title.c_str());
+    }
 
     if (!s.input_error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kErrorText));
@@ -56,13 +60,18 @@ void draw_algorithm_panel(Session& s) {
     ImGui::Spacing();
     ImGui::TextDisabled("Input");
     ImGui::BeginChild("input", ImVec2(0, -ImGui::GetTextLineHeightWithSpacing() * 2.5f));
+    // An exam problem's input is the problem: it is shown, not edited.
+    ImGui::BeginDisabled(s.exam.active);
     json edited = s.input;
     if (edit_json_fields(edited)) s.edit(std::move(edited));
+    ImGui::EndDisabled();
     ImGui::EndChild();
     ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kHintText));
-    ImGui::TextWrapped(
-        "Edit a value, or drag a ■ handle on the canvas: the run restarts at the "
-        "same step.");
+    ImGui::TextWrapped("%s", s.exam.active
+                                 ? "This is the exam problem's input; leave exam practice to "
+                                   "edit it."
+                                 : "Edit a value, or drag a ■ handle on the canvas: the run "
+                                   "restarts at the same step.");
     ImGui::PopStyleColor();
 }
 

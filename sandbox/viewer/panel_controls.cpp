@@ -1,13 +1,15 @@
-// The bottom panel. Sections: [stepping] [narration] [log] [files].
+// The bottom panel. Sections: [stepping] [now] [log] [layout]; the files row is in
+// panel_files.cpp.
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cfloat>
-#include <fstream>
+#include <cmath>
 #include <string>
 
+#include "viewer/flow.hpp"
 #include "viewer/im_colour.hpp"
+#include "viewer/math_text.hpp"
 #include "viewer/palette.hpp"
 #include "viewer/panels.hpp"
 #include "viewer/text_wrap.hpp"
@@ -23,48 +25,87 @@ void tooltip(const char* text) {
 // --- [stepping] ------------------------------------------------------------------------------
 
 void draw_stepping(Session& s) {
-    if (ImGui::Button("|< Reset")) s.reset();
+    // Narrow windows get symbols for the buttons whose tooltips say what they do.
+    const bool compact = ImGui::GetContentRegionAvail().x < 800;
+    ImGui::BeginDisabled(s.solution_hidden());  // an exam's steps are its solution
+    if (ImGui::Button(compact ? "|<" : "|< Reset")) s.reset();
     tooltip("Back to step 0  (Home)");
     ImGui::SameLine();
-    if (ImGui::Button("< Back")) s.step_back();
+    if (ImGui::Button(compact ? "<" : "< Back")) s.step_back();
     tooltip("One step back  (←)");
     ImGui::SameLine();
     if (ImGui::Button("Step >")) s.step_forward();
     tooltip("One step  (→ or Space)");
     ImGui::SameLine();
-    if (ImGui::Button("Run to end >|")) s.run_to_end();
+    if (ImGui::Button(compact ? ">|" : "Run to end >|")) s.run_to_end();
     tooltip("All remaining steps at once, stopping at a breakpoint  (End)");
     ImGui::SameLine();
     if (ImGui::Button(s.playing ? "Pause##play" : "Play##play",
                       ImVec2(ImGui::GetFontSize() * 4, 0)))
         s.toggle_play();
     tooltip("Step on by itself, stopping at a breakpoint  (P)");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9);
+    const float speed = ImGui::GetFontSize() * (compact ? 7 : 9);
+    flow(speed);
+    ImGui::SetNextItemWidth(speed);
     ImGui::SliderFloat("##speed", &s.steps_per_second, 0.5f, 60.0f, "%.1f steps/s",
                        ImGuiSliderFlags_Logarithmic);
     tooltip("Play's speed");
 
     const std::optional<std::size_t> n = s.length();
-    const std::string counter =
-        "step " + std::to_string(s.index()) + " / " + (n ? std::to_string(*n) : "?");
-    ImGui::SameLine();
+    // An exam's length would give its answer away (a short run was rejected early).
+    const std::string counter = s.solution_hidden() ? "solution hidden"
+                                                    : "step " + std::to_string(s.index()) + " / " +
+                                                          (n ? std::to_string(*n) : "?");
+    flow(ImGui::CalcTextSize(counter.c_str()).x + ImGui::GetFontSize() * 8);
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(counter.c_str());
 
     // Scrubbing: a slider over the whole run (or over what is known of it).
     ImU64 step = s.index(), first = 0;
-    ImU64 last = n ? *n : std::max<ImU64>(2 * step, step + 20);
+    ImU64 last = n && !s.solution_hidden() ? *n : std::max<ImU64>(2 * step, step + 20);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-FLT_MIN);
     if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &step, &first, &last, "go to step %llu"))
         s.jump(step);
+    ImGui::EndDisabled();
 }
 
-// --- [narration] -----------------------------------------------------------------------------
+// --- [now] -----------------------------------------------------------------------------------
 
-void draw_narration(Session& s) {
+// The open lesson's note on the current event, on a tinted card so it is read with the
+// narration it explains.
+void draw_note(Session& s, const std::string& text) {
+    constexpr float kPad = 6, kBar = 3;
+    const char* label = "What this means";
+    const float width = ImGui::GetContentRegionAvail().x;
+    const std::string body = wrap_at_spaces(ImGui::GetFont(), ImGui::GetFontSize(),
+                                            text_to_unicode(text), width - 2 * kPad - kBar);
+    const ImFont* bold = s.fonts.bold;
+    const float label_height = bold->FontSize + 2;
+    const float height = 2 * kPad + label_height + ImGui::CalcTextSize(body.c_str()).y;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(at, ImVec2(at.x + width, at.y + height), im_colour(kNoteBackground), 4);
+    dl->AddRectFilled(at, ImVec2(at.x + kBar, at.y + height), im_colour(kNoteAccent));
+    const float x = at.x + kBar + kPad;
+    dl->AddText(bold, bold->FontSize, ImVec2(x, at.y + kPad), im_colour(darker(kNoteAccent, 0.75f)),
+                label);
+    dl->AddText(ImVec2(x, at.y + kPad + label_height), ImGui::GetColorU32(ImGuiCol_Text),
+                body.c_str());
+    ImGui::Dummy(ImVec2(width, height));
+}
+
+// What the current step did: the narration, its formula, and what the lesson says about it.
+void draw_now(Session& s) {
     ImGui::PushFont(s.fonts.large);
-    if (const StepInfo* info = s.last_step()) {
+    const StepInfo* info = s.last_step();
+    if (s.solution_hidden()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kCaptionText));
+        text_wrapped("Exam problem " + std::to_string(s.exam.problem.seed) +
+                     ": work it out on paper, type your answers in the Exam tab and press "
+                     "Check. The solution stays hidden until you ask for it.");
+        ImGui::PopStyleColor();
+    } else if (info) {
         text_wrapped(info->narration);
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kHintText));
@@ -72,8 +113,22 @@ void draw_narration(Session& s) {
         ImGui::PopStyleColor();
     }
     ImGui::PopFont();
+    if (s.solution_hidden() || !info) return;
+    if (!info->math.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kMathText));
+        ImGui::TextUnformatted(wrap_formula(ImGui::GetFont(), ImGui::GetFontSize(),
+                                            math_to_unicode(info->math),
+                                            ImGui::GetContentRegionAvail().x)
+                                   .c_str());
+        ImGui::PopStyleColor();
+    }
     if (s.timeline && s.timeline->hit_step_limit())
         ImGui::TextColored(im_vec4(kErrorText), "Stopped: the run reached the step limit.");
+    if (const Lesson* l = s.lesson())
+        if (const LessonEventNote* note = l->note_for(info->event)) {
+            ImGui::Spacing();
+            draw_note(s, note->text);
+        }
 }
 
 // --- [log] -----------------------------------------------------------------------------------
@@ -105,58 +160,38 @@ void draw_log(Session& s, float height) {
     if (clicked) s.jump(clicked);  // after the loop: jumping rebuilds the log
 }
 
-// --- [files] ---------------------------------------------------------------------------------
-
-void save_checkpoint(Session& s) {
-    std::ofstream f(s.checkpoint_path);
-    f << checkpoint_to_json(s.checkpoint()).dump(2) << "\n";
-    if (f)
-        s.set_status("Saved " + s.checkpoint_path, false);
-    else
-        s.set_status("cannot write " + s.checkpoint_path, true);
-}
-
-void open_checkpoint(Session& s) {
-    try {
-        const Checkpoint c =
-            checkpoint_from_json(parse_json(read_text_file(s.checkpoint_path)), s.registry);
-        s.load(c);
-        s.set_status("Opened " + s.checkpoint_path, false);
-    } catch (const std::exception& e) {  // InputError names the field; JSON errors the place
-        s.set_status(s.checkpoint_path + ": " + e.what(), true);
-    }
-}
-
-void draw_files(Session& s) {
-    if (ImGui::Button("Screenshot")) s.screenshot_requested = true;
-    tooltip("Save the whole window as cgsandbox-<id>-step<k>.png here");
-    ImGui::SameLine(0, ImGui::GetFontSize() * 1.5f);
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("Checkpoint");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 16);
-    ImGui::InputText("##checkpoint", &s.checkpoint_path);
-    tooltip("A checkpoint file: algorithm, input, step and view");
-    ImGui::SameLine();
-    if (ImGui::Button("Save")) save_checkpoint(s);
-    ImGui::SameLine();
-    if (ImGui::Button("Open")) open_checkpoint(s);
-    if (!s.status.empty()) {
-        ImGui::SameLine();
-        ImGui::TextColored(im_vec4(s.status_is_error ? kErrorText : kOkText), "%s",
-                           s.status.c_str());
-    }
-}
-
 }  // namespace
+
+// --- [layout] --------------------------------------------------------------------------------
 
 void draw_controls_panel(Session& s) {
     draw_stepping(s);
-    draw_narration(s);
-    const float files_row = ImGui::GetFrameHeightWithSpacing();
-    draw_log(s,
-             std::max(ImGui::GetContentRegionAvail().y - files_row, ImGui::GetFrameHeight() * 2));
-    draw_files(s);
+    // The files row's height is last frame's: it wraps onto more rows in a narrow window.
+    const float files = s.files_height > 0 ? s.files_height : ImGui::GetFrameHeightWithSpacing();
+    const float spacing = ImGui::GetStyle().ItemSpacing.y;
+    const float body =
+        std::max(ImGui::GetContentRegionAvail().y - files - spacing, ImGui::GetFrameHeight() * 2);
+    const float width = ImGui::GetContentRegionAvail().x;
+    if (width >= 760) {  // side by side: the step now, and the story so far
+        ImGui::BeginChild("now", ImVec2(std::round(width * 0.6f), body));
+        draw_now(s);
+        ImGui::EndChild();
+        ImGui::SameLine();
+        draw_log(s, body);
+    } else if (body >= ImGui::GetFontSize() * 9) {  // stacked, the step now first
+        const float now = std::round(body * 0.6f);
+        ImGui::BeginChild("now", ImVec2(0, now));
+        draw_now(s);
+        ImGui::EndChild();
+        draw_log(s, std::max(body - now - spacing, ImGui::GetFrameHeight()));
+    } else {  // too small for both: the step now matters more than the story so far
+        ImGui::BeginChild("now", ImVec2(0, body));
+        draw_now(s);
+        ImGui::EndChild();
+    }
+    const float top = ImGui::GetCursorPosY();
+    draw_files_row(s);
+    s.files_height = ImGui::GetCursorPosY() - top;
 }
 
 }  // namespace cg::viewer

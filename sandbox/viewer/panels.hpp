@@ -6,8 +6,11 @@
 
 namespace cg::viewer {
 
-// Left: the algorithm picker and the input editor (panel_algorithm.cpp).
+// Left, one tab each: the algorithm picker and the input editor (panel_algorithm.cpp); the
+// lesson browser and the open lesson (panel_lesson.cpp); exam practice (panel_exam.cpp).
 void draw_algorithm_panel(Session& s);
+void draw_lessons_panel(Session& s);
+void draw_exam_panel(Session& s);
 
 // Right: pseudocode with the active line and breakpoints, the variables, the event legend
 // (panel_code.cpp).
@@ -15,8 +18,9 @@ void draw_pseudocode_panel(Session& s);
 void draw_variables_panel(Session& s);
 void draw_events_panel(Session& s);
 
-// Bottom: stepping controls, the narration and its log, screenshot and checkpoints
-// (panel_controls.cpp).
+// Bottom: stepping controls, the narration with its formula and the lesson's note, the log,
+// screenshot, checkpoints and the worked-example export (panel_controls.cpp).
 void draw_controls_panel(Session& s);
+void draw_files_row(Session& s);  // its last row (panel_files.cpp)
 
 }  // namespace cg::viewer

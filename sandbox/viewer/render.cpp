@@ -24,9 +24,15 @@ void render_png(const Registry& registry, const Checkpoint& checkpoint, int widt
     // The run first: bad input is reported as such, before any window is opened.
     Session s(registry);
     s.probe_seconds = 2.0;  // a PNG should say "k / n" if it reasonably can
-    s.start(*algorithm, checkpoint.input, checkpoint.step);
-    s.canvas.fit_pending = !checkpoint.view;
-    if (checkpoint.view) s.canvas.view = *checkpoint.view;
+    if (checkpoint.exam_seed)
+        s.start_exam(*algorithm, *checkpoint.exam_seed);
+    else
+        s.start(*algorithm, checkpoint.input, checkpoint.step);
+    // Then as the viewer opens it: the lesson, the exam, the view. A lesson that cannot be
+    // found is an error here, where the viewer would only say so.
+    s.lessons = load_lessons(default_lessons_dir(), registry);
+    s.load(checkpoint);
+    if (s.status_is_error) throw std::runtime_error(s.status);
 
     GuiHost host("CG Sandbox", width, height, GuiHost::Mode::Offscreen);
     s.fonts = host.fonts();

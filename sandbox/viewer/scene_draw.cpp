@@ -1,8 +1,9 @@
-// A cg::Scene as ImDrawList calls. Sections: [strokes and fills] [primitives] [labels]
-// [draw_scene].
+// A cg::Scene as ImDrawList calls. Sections: [strokes and fills] [pixel grids] [primitives]
+// [labels] [draw_scene].
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <string>
 #include <vector>
@@ -118,6 +119,80 @@ std::vector<glm::dvec2> to_screen(const ScreenMap& map, const std::vector<glm::d
     out.reserve(world.size());
     for (glm::dvec2 w : world) out.push_back(map.to_screen(w));
     return out;
+}
+
+// --- [pixel grids] ---------------------------------------------------------------------------
+
+constexpr std::uint32_t kRoleCellAlpha = 0xa0;    // cells in the grid's role colour
+constexpr std::uint32_t kCellBorder = 0x00000030;  // over white and over colour alike
+constexpr std::uint32_t kEmptyCentre = 0x9a9a9aff;
+constexpr std::uint32_t kFilledCentre = 0x00000080;
+constexpr double kBorderPixels = 6;   // cell size from which borders are drawn
+constexpr double kCentrePixels = 14;  // ... and centre dots
+
+// The visible cells as filled squares (runs of one colour merged into one rectangle; below one
+// screen pixel per cell, blocks of cells drawn as one in the colour of their first filled
+// cell), then, zoomed in, the cell borders and the sample points at the centres.
+void draw_pixel_grid(Painter& p, const PixelGrid2& g) {
+    if (g.width <= 0 || g.height <= 0 ||
+        g.rgba.size() != static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height))
+        return;
+    const Box& c = p.map.canvas;
+    const glm::dvec2 lo = p.map.to_world({c.min.x, c.max.y}) - g.origin;
+    const glm::dvec2 hi = p.map.to_world({c.max.x, c.min.y}) - g.origin;
+    auto cells = [](double v, int n) { return static_cast<int>(std::clamp(v, 0.0, double(n))); };
+    const int i0 = cells(std::floor(lo.x), g.width), i1 = cells(std::ceil(hi.x), g.width);
+    const int j0 = cells(std::floor(lo.y), g.height), j1 = cells(std::ceil(hi.y), g.height);
+    if (i0 >= i1 || j0 >= j1) return;
+
+    const double size = p.map.view.zoom;  // screen pixels per cell
+    const ImU32 role = im_colour(with_alpha(role_rgba(g.role), kRoleCellAlpha));
+    auto cell_at = [&](int i, int j) {
+        return g.rgba[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.width) + i];
+    };
+    auto corner = [&](double i, double j) {  // a cell corner on screen, kept near the canvas
+        const glm::dvec2 s = p.map.to_screen(g.origin + glm::dvec2(i, j));
+        return glm::clamp(s, p.safe.min, p.safe.max);
+    };
+    const int stride = size >= 1 ? 1 : static_cast<int>(std::ceil(1 / size));
+    auto block = [&](int i, int j) {
+        for (int b = j; b < std::min(j + stride, j1); ++b)
+            for (int a = i; a < std::min(i + stride, i1); ++a)
+                if (const std::uint32_t v = cell_at(a, b)) return v;
+        return std::uint32_t{0};
+    };
+    for (int j = j0; j < j1; j += stride) {
+        const double top = std::min(j + stride, g.height);
+        int start = i0;
+        std::uint32_t run = 0;
+        for (int i = i0;; i += stride) {
+            const bool end = i >= i1;
+            const std::uint32_t v = end ? 0 : block(i, j);
+            if (end || v != run) {
+                if (run != 0)
+                    p.dl->AddRectFilled(im(corner(start, top)), im(corner(std::min(i, i1), j)),
+                                        run == PixelGrid2::kRoleColour ? role : im_colour(run));
+                start = i, run = v;
+            }
+            if (end) break;
+        }
+    }
+    if (!g.grid_lines || size < kBorderPixels) return;
+
+    const ImU32 border = im_colour(kCellBorder);
+    for (int i = i0; i <= i1; ++i)
+        p.dl->AddLine(im(corner(i, j0)), im(corner(i, j1)), border);
+    for (int j = j0; j <= j1; ++j)
+        p.dl->AddLine(im(corner(i0, j)), im(corner(i1, j)), border);
+    if (size < kCentrePixels) return;
+    const float radius = static_cast<float>(std::clamp(size * 0.06, 1.5, 3.0));
+    for (int j = j0; j < j1; ++j)
+        for (int i = i0; i < i1; ++i) {
+            const glm::dvec2 centre = p.map.to_screen(g.origin + glm::dvec2(i + 0.5, j + 0.5));
+            if (!c.contains(centre)) continue;
+            p.dl->AddCircleFilled(im(centre), radius,
+                                  im_colour(cell_at(i, j) ? kFilledCentre : kEmptyCentre), 8);
+        }
 }
 
 // --- [primitives] ----------------------------------------------------------------------------
@@ -246,6 +321,7 @@ void draw_scene(ImDrawList* dl, const ScreenMap& map, const Scene& scene, const 
                 int hot_handle, const std::vector<Box>& keep_clear) {
     Painter p{dl, map, fonts, map.canvas.grown(kSafeMargin), LabelPlacer(map.canvas), {}};
     for (const Box& b : keep_clear) p.placer.keep_clear(b);
+    for (const PixelGrid2& g : scene.grids) draw_pixel_grid(p, g);
     for (const HalfPlane2& h : scene.half_planes) draw_half_plane(p, h);
     for (const Polygon2& poly : scene.polygons) draw_polygon(p, poly);
     for (const Segment2& s : scene.segments) draw_segment(p, s);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "viewer/export.hpp"
+
 namespace cg::viewer {
 
 namespace {
@@ -37,6 +39,9 @@ void Session::start(const Algorithm& a, json in, std::size_t step) {
         canvas.dragged_handle = -1;
         followed_line = 0;
         followed_event.clear();
+        // A path the student typed stays; the default follows the algorithm.
+        if (export_path.empty() || (algorithm && export_path == default_export_path(*algorithm)))
+            export_path = default_export_path(a);
     }
     algorithm = &a;
     input = std::move(in);
@@ -74,6 +79,7 @@ bool Session::try_start(const Algorithm& a, json in, std::size_t step) {
 }
 
 void Session::choose(const Algorithm& a) {
+    leave_exam();
     try_start(a, a.example(), 0);
     canvas.fit_pending = true;
 }
@@ -84,13 +90,39 @@ void Session::load(const Checkpoint& c) {
         set_status("unknown algorithm \"" + c.algorithm + "\"", true);
         return;
     }
-    try_start(*a, c.input, c.step);
+    leave_exam();
+    if (c.exam_seed) {
+        if (try_start_exam(*a, *c.exam_seed) && c.step > 0) {
+            exam.revealed = true;  // a later step means the solution was being stepped
+            timeline->jump(c.step);
+        }
+    } else {
+        try_start(*a, c.input, c.step);
+    }
+    lesson_id.clear();
+    preset = c.preset;
+    browsing = false;
+    if (!c.lesson.empty()) {
+        if (lessons.find(c.lesson))
+            lesson_id = c.lesson;
+        else
+            set_status("no lesson \"" + c.lesson + "\" (lessons: " + default_lessons_dir() + ")",
+                       true);
+    }
+    if (c.exam_seed)
+        show_tab(Tab::Exam);
+    else if (!lesson_id.empty())
+        show_tab(Tab::Lessons);
     canvas.fit_pending = !c.view;
     if (c.view) canvas.view = *c.view;
 }
 
 bool Session::edit(json edited) {
     if (!algorithm) return false;
+    if (exam.active) {  // the editor is disabled; this catches a dragged handle
+        set_status("The exam problem's input is fixed: leave exam practice to edit it.", true);
+        return false;
+    }
     return try_start(*algorithm, std::move(edited), index());
 }
 
@@ -100,6 +132,9 @@ Checkpoint Session::checkpoint() const {
     c.input = input;
     c.step = index();
     if (!canvas.fit_pending) c.view = canvas.view;
+    if (const Lesson* l = lesson()) c.lesson = l->id;
+    if (const LessonPreset* p = loaded_preset()) c.preset = p->name;
+    if (exam.active) c.exam_seed = exam.problem.seed;
     return c;
 }
 
@@ -139,27 +174,27 @@ bool Session::on_breakpoint() {
 
 void Session::step_forward() {
     playing = false;
-    if (timeline) timeline->forward();
+    if (can_step()) timeline->forward();
 }
 
 void Session::step_back() {
     playing = false;
-    if (timeline) timeline->back();
+    if (can_step()) timeline->back();
 }
 
 void Session::reset() {
     playing = false;
-    if (timeline) timeline->reset();
+    if (can_step()) timeline->reset();
 }
 
 void Session::jump(std::size_t step) {
     playing = false;
-    if (timeline) timeline->jump(step);
+    if (can_step()) timeline->jump(step);
 }
 
 void Session::run_to_end() {
     playing = false;
-    if (!timeline) return;
+    if (!can_step()) return;
     if (breakpoints.empty()) {
         timeline->to_end();
         return;
@@ -170,7 +205,7 @@ void Session::run_to_end() {
 }
 
 void Session::toggle_play() {
-    if (playing || !timeline) {
+    if (playing || !can_step()) {
         playing = false;
         return;
     }

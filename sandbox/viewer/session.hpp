@@ -4,6 +4,10 @@
 //
 // A refused input never loses the picture: the editor keeps the bad input and shows why it
 // was refused, while the canvas keeps showing the last run that did start.
+//
+// Studying adds two things on top of a run: an open lesson (its text beside the canvas, its
+// presets as inputs, its notes on the current event), and exam practice, which runs a
+// generated problem with the solution hidden: stepping stays locked until it is revealed.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +21,8 @@
 
 #include "checkpoint.hpp"
 #include "core/timeline.hpp"
+#include "io/exam.hpp"
+#include "io/lesson.hpp"
 #include "viewer/fonts.hpp"
 
 namespace cg::viewer {
@@ -37,6 +43,19 @@ struct CanvasState {
     int dragged_handle = -1;       // index into Scene::handles while one is dragged
     glm::dvec2 grab_offset{0, 0};  // handle minus mouse, in world units: no jump on grab
     bool panning = false;
+};
+
+// The left panel's tabs.
+enum class Tab { Algorithm, Lessons, Exam };
+
+struct ExamState {
+    bool active = false;
+    std::uint64_t seed = 1;          // the seed field; the problem's own is problem.seed
+    ExamProblem problem;             // the problem practised while active
+    std::vector<std::string> typed;  // the student's answers, one per problem.answers
+    std::vector<FieldGrade> grades;  // the last Check's verdicts; empty before any
+    bool revealed = false;           // the solution may be stepped through
+    bool answers_shown = false;      // the expected values are shown beside the answers
 };
 
 struct Session {
@@ -62,9 +81,20 @@ struct Session {
 
     CanvasState canvas;
 
+    // --- studying ---
+    LessonLibrary lessons;  // loaded at start-up; broken files are listed in lessons.errors
+    std::string lesson_id;  // the open lesson, shown while its algorithm is the one running
+    std::string preset;     // the lesson preset last loaded (it counts while the input equals it)
+    bool browsing = false;  // the Lessons tab lists the lessons although one is open
+    ExamState exam;
+    Tab tab = Tab::Algorithm;
+    bool tab_requested = false;  // select `tab` in the tab bar on the next frame
+
     // --- panels ---
     std::string checkpoint_path = "checkpoint.json";
-    std::string status;  // the last save / open / screenshot message
+    std::string export_path;  // "Export worked example…"; worked-<id>.md until edited
+    float files_height = 0;   // the files row's height last frame, so the log leaves room
+    std::string status;       // the last save / open / screenshot message
     bool status_is_error = false;
     bool screenshot_requested = false;  // taken by the main loop after the frame is drawn
     int followed_line = 0;              // the pseudocode line last scrolled into view
@@ -89,7 +119,22 @@ struct Session {
     Scene scene() const;
     const NarrationLog& log();
 
-    // --- moving (each does nothing without a run) ---
+    // --- studying (session_study.cpp) ---
+    const Lesson* lesson() const;               // the open lesson, if its algorithm runs
+    const LessonPreset* loaded_preset() const;  // the preset, while the input is still it
+    void open_lesson(const Lesson& l);          // its first preset, unless already running it
+    void load_preset(const LessonPreset& p);    // restarts at step 0
+    void show_tab(Tab t);
+    // Starts exam practice on make_exam(a, seed) at step 0, solution hidden. Throws
+    // InputError (no generator, or a refused input) and leaves the session unchanged.
+    void start_exam(const Algorithm& a, std::uint64_t seed);
+    bool try_start_exam(const Algorithm& a, std::uint64_t seed);  // failures: the status line
+    void check_exam();                                            // grades exam.typed
+    void reveal_next_step();  // unlocks stepping and takes one step
+    void leave_exam();
+    bool solution_hidden() const { return exam.active && !exam.revealed; }
+
+    // --- moving (each does nothing without a run, or while an exam's solution is hidden) ---
     void step_forward();
     void step_back();
     void reset();
@@ -102,6 +147,7 @@ struct Session {
 
   private:
     bool on_breakpoint();  // true (and says so) when the last step's line has a breakpoint
+    bool can_step() const { return timeline && !solution_hidden(); }
 
     NarrationLog log_;
 };

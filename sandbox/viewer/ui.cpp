@@ -12,7 +12,8 @@ namespace {
 
 // The window's regions: the right column runs the full height (pseudocode, variables,
 // events), the bottom row spans the rest of the width (controls and narration), and the
-// input panel and the canvas share what is left above it.
+// left panel (algorithm, lessons, exam) and the canvas share what is left above it. The left
+// panel is wider while a lesson or an exam is in it: that is text to read.
 struct Layout {
     ImVec2 left_pos, left_size;
     ImVec2 canvas_pos, canvas_size;
@@ -21,10 +22,12 @@ struct Layout {
 };
 
 // `code` is the height the pseudocode needs; the variables and events share what is left.
-Layout compute_layout(ImVec2 d, float code) {
-    const float left = std::clamp(d.x * 0.21f, 200.0f, 360.0f);
+Layout compute_layout(ImVec2 d, float code, bool reading) {
+    const float left =
+        reading ? std::clamp(d.x * 0.27f, 250.0f, 460.0f) : std::clamp(d.x * 0.21f, 200.0f, 360.0f);
     const float right = std::clamp(d.x * 0.27f, 230.0f, 460.0f);
-    const float bottom = std::clamp(d.y * 0.28f, 190.0f, 300.0f);
+    // Taller while reading: the narration, its formula and the lesson's note share it.
+    const float bottom = std::clamp(d.y * (reading ? 0.33f : 0.30f), 240.0f, 330.0f);
     const float top = std::max(d.y - bottom, 100.0f);
     const float middle = std::max(d.x - left - right, 100.0f);
     code = std::round(std::clamp(code, d.y * 0.2f, d.y * 0.45f));
@@ -57,6 +60,28 @@ void panel(const char* title, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra, D
     ImGui::End();  // always, whatever Begin returned
 }
 
+// A tab that can also be selected from code (opening a lesson shows the Lessons tab). The
+// request stays until the tab bar has actually switched, which takes it a frame.
+template <class Draw>
+void tab(Session& s, const char* label, Tab t, Draw draw) {
+    const bool requested = s.tab_requested && s.tab == t;
+    if (!ImGui::BeginTabItem(label, nullptr, requested ? ImGuiTabItemFlags_SetSelected : 0)) return;
+    if (requested) s.tab_requested = false;
+    if (!s.tab_requested) s.tab = t;
+    ImGui::BeginChild("tab");  // scrolls below the tab bar, which stays put
+    draw();
+    ImGui::EndChild();
+    ImGui::EndTabItem();
+}
+
+void draw_left_panel(Session& s) {
+    if (!ImGui::BeginTabBar("left")) return;
+    tab(s, "Algorithm", Tab::Algorithm, [&] { draw_algorithm_panel(s); });
+    tab(s, "Lessons", Tab::Lessons, [&] { draw_lessons_panel(s); });
+    tab(s, "Exam", Tab::Exam, [&] { draw_exam_panel(s); });
+    ImGui::EndTabBar();
+}
+
 void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
@@ -80,8 +105,9 @@ void draw_ui(Session& s, ImVec2 display, bool full_ui, bool interactive) {
     if (s.algorithm)
         code += ImGui::GetTextLineHeightWithSpacing() * s.algorithm->spec->pseudocode.size();
     ImGui::PopFont();
-    const Layout l = compute_layout(display, code);
-    panel("Algorithm", l.left_pos, l.left_size, 0, [&] { draw_algorithm_panel(s); });
+    const Layout l = compute_layout(display, code, s.tab != Tab::Algorithm);
+    panel("Study", l.left_pos, l.left_size, ImGuiWindowFlags_NoTitleBar,
+          [&] { draw_left_panel(s); });
     canvas_window(s, l.canvas_pos, l.canvas_size, interactive);
     panel("Step", l.bottom_pos, l.bottom_size, ImGuiWindowFlags_NoScrollbar,
           [&] { draw_controls_panel(s); });

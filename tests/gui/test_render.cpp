@@ -4,6 +4,9 @@
 
 #include <stb_image.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "io/json.hpp"
 #include "support/process.hpp"
 #include "viewer/palette.hpp"
@@ -15,10 +18,15 @@ struct Image {
     std::vector<unsigned char> rgba;
     // Pixels within `tolerance` (per channel) of the role's colour.
     std::vector<std::pair<int, int>> find(std::uint32_t rgba_colour, int tolerance = 24) const {
+        return find_in(rgba_colour, 0, 0, width, height, tolerance);
+    }
+    // The same, within the rectangle [x0, x1) × [y0, y1).
+    std::vector<std::pair<int, int>> find_in(std::uint32_t rgba_colour, int x0, int y0, int x1,
+                                             int y1, int tolerance = 24) const {
         const int r = rgba_colour >> 24 & 255, g = rgba_colour >> 16 & 255, b = rgba_colour >> 8 & 255;
         std::vector<std::pair<int, int>> hits;
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) {
+        for (int y = std::max(y0, 0); y < std::min(y1, height); ++y)
+            for (int x = std::max(x0, 0); x < std::min(x1, width); ++x) {
                 const unsigned char* p = &rgba[4 * (y * width + x)];
                 if (std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
                     std::abs(p[2] - b) <= tolerance)
@@ -28,12 +36,19 @@ struct Image {
     }
 };
 
-Image render(const std::string& input, int step, const std::string& name) {
-    const std::string in = cg::test::write_temp(name + ".json", input);
+// `cgsandbox render <args> --out <name>.png` under Xvfb; `env` entries ("NAME=value") are set
+// for the renderer.
+Image render_args(const std::vector<std::string>& args, const std::string& name,
+                  const std::vector<std::string>& env = {}) {
     const std::string out = cg::test::output_path(name + ".png");
-    auto r = cg::test::run_process({"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", CG_BINARY,
-                                    "render", "liang-barsky", "--input", in, "--step",
-                                    std::to_string(step), "--out", out, "--size", "400x300"});
+    std::vector<std::string> argv = {"env"};
+    argv.insert(argv.end(), env.begin(), env.end());
+    for (const char* a : {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", CG_BINARY, "render"})
+        argv.push_back(a);
+    argv.insert(argv.end(), args.begin(), args.end());
+    argv.push_back("--out");
+    argv.push_back(out);
+    auto r = cg::test::run_process(argv);
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     Image img;
@@ -43,6 +58,13 @@ Image render(const std::string& input, int step, const std::string& name) {
     img.rgba.assign(data, data + 4 * img.width * img.height);
     stbi_image_free(data);
     return img;
+}
+
+Image render(const std::string& input, int step, const std::string& name) {
+    const std::string in = cg::test::write_temp(name + ".json", input);
+    return render_args({"liang-barsky", "--input", in, "--step", std::to_string(step), "--size",
+                        "400x300"},
+                       name);
 }
 
 struct Box {
@@ -78,7 +100,7 @@ TEST_CASE("gui: render shows the window, and the kept part inside it", "[gui]") 
     CHECK(img.find(cg::viewer::role_rgba(cg::Role::Discarded)).size() < 5);
 }
 
-TEST_CASE("gui: before any step nothing is kept; a rejected segment turns red", "[gui]") {
+TEST_CASE("gui: before any step nothing is kept, and a rejected segment turns red", "[gui]") {
     Image start = render(kCrossing, 0, "crossing-start");
     CHECK(start.find(cg::viewer::role_rgba(cg::Role::Kept)).size() < 5);
     CHECK(start.find(cg::viewer::role_rgba(cg::Role::Window)).size() > 300);
@@ -99,4 +121,77 @@ TEST_CASE("gui: render refuses bad input before opening a window", "[gui][errors
                                   cg::test::output_path("never.png")});
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Catch::Contains("window: must be a JSON object"));
+}
+
+// --- lessons and exam practice, in the full UI ------------------------------------------------
+//
+// At 1400x900 with a lesson or an exam open, the left panel is the leftmost 27 % (378 px) and
+// the top two thirds; the canvas runs from there to the right column (the rightmost 27 %).
+namespace {
+
+constexpr int kW = 1400, kH = 900;
+constexpr int kLeft = 378, kRight = kW - 378, kTop = 600;
+
+// Near-black: the panels' text (antialiased glyphs have some pixels at full ink).
+std::size_t text_pixels(const Image& img, int x0, int x1) {
+    return img.find_in(0x000000ff, x0, 0, x1, kTop, 40).size();
+}
+
+}  // namespace
+
+TEST_CASE("gui: the lesson view shows the lesson's text beside the canvas", "[gui][lessons]") {
+    Image img = render_args({"--lesson", "liang-barsky", "--preset", "a segment crossing two edges",
+                             "--step", "6", "--full", "--size", "1400x900"},
+                            "lesson-full");
+    REQUIRE(img.width == kW);
+    // Section headings in their colour, and plenty of text, in the lesson panel.
+    CHECK(img.find_in(cg::viewer::kSectionTitle, 0, 0, kLeft, kTop, 30).size() > 200);
+    CHECK(text_pixels(img, 0, kLeft) > 1500);
+    // The canvas still shows the run: the window, and the kept part at the end.
+    CHECK(img.find_in(cg::viewer::role_rgba(cg::Role::Window), kLeft, 0, kRight, kTop).size() > 300);
+    CHECK(img.find_in(cg::viewer::role_rgba(cg::Role::Kept), kLeft, 0, kRight, kTop).size() > 30);
+
+    // Without --lesson the left panel is the algorithm's, with no lesson headings.
+    Image plain = render_args({"liang-barsky", "--full", "--size", "1400x900"}, "plain-full");
+    CHECK(plain.find_in(cg::viewer::kSectionTitle, 0, 0, kLeft, kTop, 30).size() < 20);
+}
+
+TEST_CASE("gui: a checkpoint reopens its lesson", "[gui][lessons][checkpoint]") {
+    const std::string c = cg::test::write_temp(
+        "lesson-checkpoint.json",
+        R"({"algorithm": "liang-barsky", "step": 2, "lesson": "liang-barsky",
+            "preset": "a segment crossing two edges",
+            "input": {"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4},
+                      "p0": [0, 2], "p1": [4, 6]}})");
+    Image img = render_args({"--checkpoint", c, "--full", "--size", "1400x900"}, "lesson-ckpt");
+    CHECK(img.find_in(cg::viewer::kSectionTitle, 0, 0, kLeft, kTop, 30).size() > 200);
+}
+
+TEST_CASE("gui: exam practice shows the question and hides the solution", "[gui][exam]") {
+    Image img = render_args({"liang-barsky", "--exam", "3", "--full", "--size", "1400x900"},
+                            "exam-full");
+    // The question's yellow card in the left panel.
+    CHECK(img.find_in(cg::viewer::kExamQuestion, 0, 0, kLeft, kTop, 8).size() > 20000);
+    // The canvas shows the problem's input at step 0: a window, nothing kept yet.
+    CHECK(img.find_in(cg::viewer::role_rgba(cg::Role::Window), kLeft, 0, kRight, kTop).size() > 300);
+    CHECK(img.find_in(cg::viewer::role_rgba(cg::Role::Kept), kLeft, 0, kRight, kTop).size() < 5);
+}
+
+TEST_CASE("gui: broken lesson files do not stop the viewer, and the good ones open",
+          "[gui][lessons][errors]") {
+    const std::filesystem::path dir = cg::test::output_path("render-lessons");
+    std::filesystem::create_directories(dir);
+    std::filesystem::copy_file(CG_SOURCE_DIR "/lessons/040-liang-barsky.json", dir / "good.json",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(dir / "broken.json") << R"({"id": "broken", "title": })";
+    const std::string env = "CGSANDBOX_LESSONS=" + dir.string();
+
+    Image img = render_args({"--lesson", "liang-barsky", "--full", "--size", "1400x900"},
+                            "lesson-broken-dir", {env});
+    CHECK(img.find_in(cg::viewer::kSectionTitle, 0, 0, kLeft, kTop, 30).size() > 200);
+    // Opening the broken one is refused clearly, without a crash.
+    auto r = cg::test::run_process({"env", env, "xvfb-run", "-a", CG_BINARY, "render", "--lesson",
+                                    "broken", "--out", cg::test::output_path("never.png")});
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("no lesson \"broken\""));
 }
