@@ -3,6 +3,8 @@
 // unlikely), plus determinism of the trace and of stepping back.
 #include <catch2/catch.hpp>
 
+#include "support/replay.hpp"
+
 #include <random>
 
 #include "clipping/liang_barsky.hpp"
@@ -232,41 +234,7 @@ TEST_CASE("liang-barsky: traces are deterministic and stepping back reproduces t
     const cg::Registry registry = cg::builtin_registry();
     const cg::Algorithm* lb = registry.find("liang-barsky");
     REQUIRE(lb);
-    const cg::json input = lb->example();
-
-    auto trace = [&] {
-        std::string out;
-        auto run = lb->create(input);
-        for (std::size_t i = 1; !run->done(); ++i) {
-            cg::StepInfo info;
-            run->step(&info);
-            out += cg::step_to_json(i, info).dump() + "\n";
-        }
-        return out + lb->result(*run).dump();
-    };
-    const std::string first = trace();
-    CHECK(trace() == first);
-
-    // Walk the timeline to the end, back to the start, and forward again.
-    cg::Timeline t(lb->create(input));
-    std::vector<std::unique_ptr<cg::Run>> forward_states;
-    std::vector<cg::StepInfo> forward_steps;
-    forward_states.push_back(t.current().clone());
-    while (t.forward()) {
-        forward_states.push_back(t.current().clone());
-        forward_steps.push_back(*t.last_step());
-    }
-    while (t.back()) REQUIRE(t.current().same_state(*forward_states[t.index()]));
-    for (std::size_t i = 1; t.forward(); ++i) {
-        REQUIRE(t.current().same_state(*forward_states[i]));
-        REQUIRE(*t.last_step() == forward_steps[i - 1]);
-    }
-    // A copy taken mid-run finishes identically.
-    t.jump(3);
-    auto copy = t.current().clone();
-    while (!copy->done()) copy->step(nullptr);
-    t.to_end();
-    CHECK(copy->same_state(t.current()));
+    cg::test::check_replay(*lb, lb->example(), 3);
 }
 
 TEST_CASE("liang-barsky: the picture shows the window, the segment and the kept part", "[clipping][liang-barsky]") {

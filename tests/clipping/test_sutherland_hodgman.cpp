@@ -3,6 +3,8 @@
 // determinism of the trace and of stepping back, and the picture.
 #include <catch2/catch.hpp>
 
+#include "support/replay.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -644,42 +646,9 @@ TEST_CASE("sutherland-hodgman: traces are deterministic and stepping back reprod
         R"({"window": [[0, 0], [6, 0], [6, 4], [0, 4]],
             "polygon": [[1, 1], [2, 1], [2, 5], [4, 5], [4, 1], [5, 1], [5, 6], [1, 6]]})");
     for (const cg::json& input : {sh->example(), arch}) {
-        auto trace = [&] {
-            std::string out;
-            auto run = sh->create(input);
-            for (std::size_t i = 1; !run->done(); ++i) {
-                cg::StepInfo info;
-                run->step(&info);
-                out += cg::step_to_json(i, info).dump() + "\n";
-            }
-            return out + sh->result(*run).dump();
-        };
-        const std::string first = trace();
-        CHECK(trace() == first);
-
-        // Walk the timeline to the end, back to the start, and forward again.
+        cg::test::check_replay(*sh, input, cg::test::kEveryStep);
         cg::Timeline t(sh->create(input));
-        std::vector<std::unique_ptr<cg::Run>> forward_states;
-        std::vector<cg::StepInfo> forward_steps;
-        forward_states.push_back(t.current().clone());
-        while (t.forward()) {
-            forward_states.push_back(t.current().clone());
-            forward_steps.push_back(*t.last_step());
-        }
-        while (t.back()) REQUIRE(t.current().same_state(*forward_states[t.index()]));
-        for (std::size_t i = 1; t.forward(); ++i) {
-            REQUIRE(t.current().same_state(*forward_states[i]));
-            REQUIRE(*t.last_step() == forward_steps[i - 1]);
-        }
-        // A copy taken mid-run (at every step) finishes identically.
-        const std::size_t n = forward_steps.size();
-        for (std::size_t k = 0; k <= n; ++k) {
-            t.jump(k);
-            auto copy = t.current().clone();
-            while (!copy->done()) copy->step(nullptr);
-            t.to_end();
-            CHECK(copy->same_state(t.current()));
-        }
+        t.to_end();
         // A finished machine stays finished.
         auto run = t.current().clone();
         cg::StepInfo info;

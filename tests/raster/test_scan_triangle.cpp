@@ -8,6 +8,8 @@
 //           [errors] [determinism] [picture]
 #include <algorithm>
 #include <catch2/catch.hpp>
+
+#include "support/replay.hpp"
 #include <cmath>
 #include <limits>
 #include <map>
@@ -606,37 +608,7 @@ TEST_CASE("scan-triangle: traces are deterministic and stepping back reproduces 
     cg::json input = a->example();
     input["colors"] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 
-    auto trace = [&] {
-        std::string out;
-        auto run = a->create(input);
-        for (std::size_t i = 1; !run->done(); ++i) {
-            cg::StepInfo info;
-            run->step(&info);
-            out += cg::step_to_json(i, info).dump() + "\n";
-        }
-        return out + a->result(*run).dump();
-    };
-    const std::string first = trace();
-    CHECK(trace() == first);
-
-    cg::Timeline t(a->create(input));
-    std::vector<std::unique_ptr<cg::Run>> forward_states;
-    std::vector<cg::StepInfo> forward_steps;
-    forward_states.push_back(t.current().clone());
-    while (t.forward()) {
-        forward_states.push_back(t.current().clone());
-        forward_steps.push_back(*t.last_step());
-    }
-    while (t.back()) REQUIRE(t.current().same_state(*forward_states[t.index()]));
-    for (std::size_t i = 1; t.forward(); ++i) {
-        REQUIRE(t.current().same_state(*forward_states[i]));
-        REQUIRE(*t.last_step() == forward_steps[i - 1]);
-    }
-    t.jump(5);  // a copy taken mid-run finishes identically
-    auto copy = t.current().clone();
-    while (!copy->done()) copy->step(nullptr);
-    t.to_end();
-    CHECK(copy->same_state(t.current()));
+    cg::test::check_replay(*a, input, 5);
 }
 
 // ---- [picture] ---------------------------------------------------------------------------------

@@ -4,6 +4,8 @@
 // determinism and the picture.
 #include <catch2/catch.hpp>
 
+#include "support/replay.hpp"
+
 #define GLM_ENABLE_EXPERIMENTAL
 #include <cmath>
 #include <glm/gtx/matrix_transform_2d.hpp>
@@ -295,37 +297,7 @@ TEST_CASE("window-viewport: traces are deterministic and stepping back reproduce
     const cg::Algorithm* a = registry.find("window-viewport");
     REQUIRE(a);
     const cg::json input = a->example();
-    auto trace = [&] {
-        std::string out;
-        auto run = a->create(input);
-        for (std::size_t i = 1; !run->done(); ++i) {
-            cg::StepInfo info;
-            run->step(&info);
-            out += cg::step_to_json(i, info).dump() + "\n";
-        }
-        return out + a->result(*run).dump();
-    };
-    const std::string first = trace();
-    CHECK(trace() == first);
-
-    cg::Timeline t(a->create(input));
-    std::vector<std::unique_ptr<cg::Run>> forward_states;
-    std::vector<cg::StepInfo> forward_steps;
-    forward_states.push_back(t.current().clone());
-    while (t.forward()) {
-        forward_states.push_back(t.current().clone());
-        forward_steps.push_back(*t.last_step());
-    }
-    while (t.back()) REQUIRE(t.current().same_state(*forward_states[t.index()]));
-    for (std::size_t i = 1; t.forward(); ++i) {
-        REQUIRE(t.current().same_state(*forward_states[i]));
-        REQUIRE(*t.last_step() == forward_steps[i - 1]);
-    }
-    t.jump(4);
-    auto copy = t.current().clone();
-    while (!copy->done()) copy->step(nullptr);
-    t.to_end();
-    CHECK(copy->same_state(t.current()));
+    cg::test::check_replay(*a, input, 4);
 
     // The result's JSON: matrices as rows.
     auto run = a->create(input);
