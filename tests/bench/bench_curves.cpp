@@ -3,6 +3,8 @@
 // algorithm.
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_support.hpp"
+
 #include <random>
 
 #include "curves/de_casteljau.hpp"
@@ -57,26 +59,7 @@ void BM_Curve_DeCasteljau_StateMachine(benchmark::State& state) {
 }
 BENCHMARK(BM_Curve_DeCasteljau_StateMachine)->Unit(benchmark::kMillisecond);
 
-// What the viewer pays per step: a narrated step through the registry plus the scene.
-void step_and_picture(benchmark::State& state, const char* id) {
-    const cg::Registry registry = cg::builtin_registry();
-    const cg::Algorithm& a = *registry.find(id);
-    const auto start = a.create(a.example());
-    auto run = start->clone();
-    cg::Scene scene;
-    for (auto _ : state) {
-        if (run->done()) {
-            state.PauseTiming();
-            run = start->clone();
-            state.ResumeTiming();
-        }
-        cg::StepInfo info;
-        run->step(&info);
-        scene.clear();
-        run->draw(scene);
-        benchmark::DoNotOptimize(scene.polygons.data());
-    }
-}
+using cg::bench::step_and_picture;
 
 void BM_Curve_DeCasteljau_StepAndPicture(benchmark::State& state) {
     step_and_picture(state, "de-casteljau");

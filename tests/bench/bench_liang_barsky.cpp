@@ -2,6 +2,8 @@
 // random segments; and the cost of one narrated step plus its picture.
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_support.hpp"
+
 #include <random>
 
 #include "clipping/liang_barsky.hpp"
@@ -47,25 +49,7 @@ void BM_LiangBarsky_StateMachine(benchmark::State& state) {
 BENCHMARK(BM_LiangBarsky_StateMachine)->Unit(benchmark::kMillisecond);
 
 // What the viewer pays per step: a narrated step through the registry plus the scene.
-void BM_LiangBarsky_StepAndPicture(benchmark::State& state) {
-    const cg::Registry registry = cg::builtin_registry();
-    const cg::Algorithm& lb = *registry.find("liang-barsky");
-    const auto start = lb.create(lb.example());
-    auto run = start->clone();
-    cg::Scene scene;
-    for (auto _ : state) {
-        if (run->done()) {
-            state.PauseTiming();
-            run = start->clone();
-            state.ResumeTiming();
-        }
-        cg::StepInfo info;
-        run->step(&info);
-        scene.clear();
-        run->draw(scene);
-        benchmark::DoNotOptimize(scene.segments.data());
-    }
-}
+void BM_LiangBarsky_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "liang-barsky"); }
 BENCHMARK(BM_LiangBarsky_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -3,6 +3,8 @@
 // one narrated step plus its picture.
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_support.hpp"
+
 #include "core/rng.hpp"
 #include "io/registry.hpp"
 #include "raster/scan_triangle.hpp"
@@ -51,25 +53,7 @@ BENCHMARK(BM_ScanTriangle_StateMachine)->Unit(benchmark::kMillisecond);
 
 // What the viewer pays per step: a narrated step through the registry plus the scene (the
 // example: a 10 × 8 grid).
-void BM_ScanTriangle_StepAndPicture(benchmark::State& state) {
-    const cg::Registry registry = cg::builtin_registry();
-    const cg::Algorithm& st = *registry.find("scan-triangle");
-    const auto start = st.create(st.example());
-    auto run = start->clone();
-    cg::Scene scene;
-    for (auto _ : state) {
-        if (run->done()) {
-            state.PauseTiming();
-            run = start->clone();
-            state.ResumeTiming();
-        }
-        cg::StepInfo info;
-        run->step(&info);
-        scene.clear();
-        run->draw(scene);
-        benchmark::DoNotOptimize(scene.grids.data());
-    }
-}
+void BM_ScanTriangle_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "scan-triangle"); }
 BENCHMARK(BM_ScanTriangle_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -2,6 +2,8 @@
 // 10^5 random maps of four points each; and the cost of one narrated step plus its picture.
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_support.hpp"
+
 #include "core/rng.hpp"
 #include "io/registry.hpp"
 #include "viewing/window_viewport.hpp"
@@ -51,25 +53,7 @@ void BM_WindowViewport_StateMachine(benchmark::State& state) {
 BENCHMARK(BM_WindowViewport_StateMachine)->Unit(benchmark::kMillisecond);
 
 // What the viewer pays per step: a narrated step through the registry plus the scene.
-void BM_WindowViewport_StepAndPicture(benchmark::State& state) {
-    const cg::Registry registry = cg::builtin_registry();
-    const cg::Algorithm& wv = *registry.find("window-viewport");
-    const auto start = wv.create(wv.example());
-    auto run = start->clone();
-    cg::Scene scene;
-    for (auto _ : state) {
-        if (run->done()) {
-            state.PauseTiming();
-            run = start->clone();
-            state.ResumeTiming();
-        }
-        cg::StepInfo info;
-        run->step(&info);
-        scene.clear();
-        run->draw(scene);
-        benchmark::DoNotOptimize(scene.polygons.data());
-    }
-}
+void BM_WindowViewport_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "window-viewport"); }
 BENCHMARK(BM_WindowViewport_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
