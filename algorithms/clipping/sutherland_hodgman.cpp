@@ -287,8 +287,7 @@ void SutherlandHodgman::advance(State& s) {
             s.orient = s.window_area > 0 ? 1.0 : -1.0;
             s.input.reserve(list_capacity(s.in));
             s.output.reserve(list_capacity(s.in));
-            s.passes.reserve(list_capacity(s.in) * s.in.window.size());
-            s.pass_end.reserve(s.in.window.size());
+            s.after_edge.reserve(s.in.window.size());
             s.input.assign(s.in.polygon.begin(), s.in.polygon.end());
             s.phase = Phase::NextEdge;
             return;
@@ -307,10 +306,13 @@ void SutherlandHodgman::advance(State& s) {
         case Phase::Clip:  // One polygon edge S→P against A→B: the four cases
             return clip_polygon_edge(s);
         case Phase::EdgeDone:  // The output list becomes the next input list
+            // Kept before the swap, not after: the swap reads the vectors' pointers 16 bytes
+            // at a time, and stalls (store-to-load forwarding fails) if the last push_back's
+            // 8-byte store of output's end is still in flight (copying after the swap cost
+            // run_to_end 13%).
+            s.after_edge.push_back(s.output);
             std::swap(s.input, s.output);
             s.output.clear();
-            s.passes.insert(s.passes.end(), s.input.begin(), s.input.end());
-            s.pass_end.push_back(s.passes.size());
             if (s.input.empty()) s.phase = Phase::Done;  // nothing inside: stop
             else if (s.k + 1 == static_cast<int>(s.in.window.size())) s.phase = Phase::Finish;
             else s.phase = Phase::NextEdge;
@@ -325,11 +327,15 @@ void SutherlandHodgman::advance(State& s) {
 
 // One polygon edge S→P = input[j − 1]→input[j] (cyclically) against window edge A→B.
 void SutherlandHodgman::clip_polygon_edge(State& s) {
-    // S, P and side(S) are not stored (see edge_S): the fewer stores per step, the closer
-    // run_to_end comes to the plain loop. Worked in locals and stored once at the end,
-    // because the output list's stores could alias the state's numbers and force reloads.
+    // S, P, side(S) and I are not stored (see edge_S, intersection_I): the fewer stores per
+    // step, the closer run_to_end comes to the plain loop. Worked in locals and stored once
+    // at the end, because the output list's stores could alias the state's numbers and force
+    // reloads. P is read in place: copied into a local, GCC loaded it as one 16-byte vector
+    // and split it into x and y through the stack, a store-and-reload on the way to the case
+    // test (the step's hard-to-predict branch); clip() reads its P the same way.
     const int j = s.j, n = static_cast<int>(s.input.size());
-    const dvec2 A = s.A, B = s.B, P = s.input[j];
+    const dvec2 A = s.A, B = s.B;
+    const dvec2& P = s.input[j];
     const double side_S = s.side_P, side_P = side(s.orient, A, B, P);
     if (side_S >= 0 && side_P >= 0) {  // case 1: in → in
         s.which = Case::InIn;
@@ -341,7 +347,6 @@ void SutherlandHodgman::clip_polygon_edge(State& s) {
         const dvec2 I = intersection(A, B, S, P, side_S, side_P, t);
         s.output.push_back(I);
         s.t = t;
-        s.I = I;
     } else if (side_P < 0) {  // case 3: out → out
         s.which = Case::OutOut;
     } else {  // case 4: going in
@@ -352,7 +357,6 @@ void SutherlandHodgman::clip_polygon_edge(State& s) {
         s.output.push_back(I);
         s.output.push_back(P);
         s.t = t;
-        s.I = I;
     }
     s.side_P = side_P;
     s.j = j + 1;
@@ -366,6 +370,8 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
     const bool clipped = s.phase == Phase::Clip || s.phase == Phase::EdgeDone;
     const dvec2 S = clipped ? edge_S(s) : dvec2(0), P = clipped ? edge_P(s) : dvec2(0);
     const double side_S = clipped ? side(s.orient, s.A, s.B, S) : 0;
+    const bool crossed = clipped && (s.which == Case::InOut || s.which == Case::OutIn);
+    const dvec2 I = crossed ? intersection_I(s) : dvec2(0);
     if (s.k >= 0) {
         info.vars.push_back({"edge", static_cast<long long>(s.k)});
         info.vars.push_back({"A", vec(s.A)});
@@ -377,9 +383,9 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
         info.vars.push_back({"side_S", side_S});
         info.vars.push_back({"side_P", s.side_P});
         info.vars.push_back({"case", std::string(case_name(s.which))});
-        if (s.which == Case::InOut || s.which == Case::OutIn) {
+        if (crossed) {
             info.vars.push_back({"t", s.t});
-            info.vars.push_back({"I", vec(s.I)});
+            info.vars.push_back({"I", vec(I)});
         }
     }
     info.vars.push_back({"input", matrix(s.input)});
@@ -407,17 +413,17 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
         // "t = 8/(8 − (-8)) = 0.5, I = (4, 2)"
         const std::string minus_P = s.side_P < 0 ? "(" + num(s.side_P) + ")" : num(s.side_P);
         const std::string cut = "SP crosses AB at t = " + num(side_S) + "/(" + num(side_S) +
-                                " − " + minus_P + ") = " + num(s.t) + ", I = " + num(s.I);
+                                " − " + minus_P + ") = " + num(s.t) + ", I = " + num(I);
         info.math = side_tex("S", s.orient, s.A, s.B, S, side_S) + ",\\quad " +
                     side_tex("P", s.orient, s.A, s.B, P, s.side_P);
-        if (s.which == Case::InOut || s.which == Case::OutIn) {
+        if (crossed) {
             const std::string minus_P_tex =
                 s.side_P < 0 ? "(" + tex(s.side_P) + ")" : tex(s.side_P);
             info.math += ",\\quad t = \\frac{\\mathrm{side}(S)}{\\mathrm{side}(S) - "
                          "\\mathrm{side}(P)} = \\frac{" + tex(side_S) + "}{" + tex(side_S) +
                          " - " + minus_P_tex + "} = " + tex(s.t) +
                          ",\\quad I = S + t\\,(P - S) = " + tex(S) + " + " + tex(s.t) + "\\," +
-                         tex(P - S) + " = " + tex(s.I);
+                         tex(P - S) + " = " + tex(I);
         }
         switch (s.which) {
             case Case::InIn:
@@ -479,14 +485,18 @@ void SutherlandHodgman::step(State& s, StepInfo* info) {
 
 SutherlandHodgman::Result SutherlandHodgman::result(const State& s) {
     if (s.phase == Phase::Setup) return {s.in.polygon, {}};
-    Result r{s.input, {}};
-    r.after_edge.reserve(s.pass_end.size());
-    std::size_t begin = 0;
-    for (const std::size_t end : s.pass_end) {
-        r.after_edge.emplace_back(s.passes.begin() + begin, s.passes.begin() + end);
-        begin = end;
-    }
-    return r;
+    return {s.input, s.after_edge};
+}
+
+// run_to_end's: the state is spent, so its lists move into the result as clip() moves its
+// own (copying them instead costs 1 + m allocations and copies per run, +40% in the benchmark).
+SutherlandHodgman::Result SutherlandHodgman::result(State&& s) {
+    if (s.phase == Phase::Setup) return {std::move(s.in.polygon), {}};
+    return {std::move(s.input), std::move(s.after_edge)};
+}
+
+dvec2 SutherlandHodgman::intersection_I(const State& s) {
+    return s.output[s.output.size() - (s.which == Case::OutIn ? 2 : 1)];
 }
 
 // ---- [clip] ----------------------------------------------------------------------------------
@@ -507,7 +517,7 @@ SutherlandHodgman::Result SutherlandHodgman::clip(const std::vector<dvec2>& wind
         output.clear();
         dvec2 S = input.back();
         double side_S = side(orient, A, B, S);
-        for (const dvec2 P : input) {
+        for (const dvec2& P : input) {  // in place, as clip_polygon_edge reads it
             const double side_P = side(orient, A, B, P);
             double t;
             if (side_S >= 0 && side_P >= 0) {
@@ -571,7 +581,8 @@ void SutherlandHodgman::draw(const State& s, Scene& scene) {
         scene.labels.push_back({P, "P", {Role::Active}});
         if (s.which == Case::InOut || s.which == Case::OutIn)
             scene.points.push_back(
-                {s.I, "I", {s.which == Case::OutIn ? Role::Entering : Role::Leaving}, 6.0f});
+                {intersection_I(s), "I", {s.which == Case::OutIn ? Role::Entering : Role::Leaving},
+                 6.0f});
     }
     if (!finished)
         for (std::size_t i = 0; i < s.output.size(); ++i)

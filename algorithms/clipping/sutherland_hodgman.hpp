@@ -83,19 +83,19 @@ struct SutherlandHodgman {
         int k = -1;              // the window edge being clipped against, 0..m−1 (−1 before)
         int j = 0;               // polygon edges of `input` done in this pass, 0..n
         glm::dvec2 A{0}, B{0};   // window edge k: A = window[k], B = window[k + 1 mod m]
-        // The polygon edge S→P tested last is input[j − 2 mod n]→input[j − 1]; S, P and
-        // side(S) are not stored (fewer stores per step keep run_to_end near the plain loop).
+        // The polygon edge S→P tested last is input[j − 2 mod n]→input[j − 1]; S, P, side(S)
+        // and I are not stored (fewer stores per step keep run_to_end near the plain loop): I
+        // is read back from the output list (see intersection_I). `which` and `t` are stored:
+        // callers stepping quietly read them (the exam generator and its tests check t).
         double side_P = 0;        // side(P), ≥ 0 inside (area units); the next step's side(S)
         Case which = Case::None;  // the case S→P fell in
         double t = 0;             // I = S + t (P − S), set in cases 2 and 4
-        glm::dvec2 I{0};          // the intersection, set in cases 2 and 4
         std::vector<glm::dvec2> input;   // the list being clipped against edge k
         std::vector<glm::dvec2> output;  // what edge k keeps so far
-        // The output list of each window edge finished, one after another: edge k's is
-        // passes[pass_end[k − 1] .. pass_end[k]) (from 0 for k = 0). One flat list, so that
-        // keeping them costs no allocation per edge; result() splits it into after_edge.
-        std::vector<glm::dvec2> passes;
-        std::vector<std::size_t> pass_end;
+        // The output list of each window edge finished, after_edge[k] for edge k: kept in the
+        // result's own shape, one exact-size copy per edge as clip() makes them, so that
+        // result(State&&) (what run_to_end calls) hands them over without copying again.
+        std::vector<std::vector<glm::dvec2>> after_edge;
         bool operator==(const State&) const = default;
     };
 
@@ -105,6 +105,10 @@ struct SutherlandHodgman {
     static void step(State& s, StepInfo* info);  // advance, then narrate if info is given
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);  // the current list; the clipped polygon once done
+    static Result result(State&& s);       // the same, moving the lists out of a spent state
+    // The intersection I of the polygon edge just clipped, when it fell in case 2 or 4: the
+    // output list's last vertex (case 2) or the one before it (case 4, which then output P).
+    static glm::dvec2 intersection_I(const State& s);
     static void draw(const State& s, Scene& scene);
 
     // Exam practice (sutherland_hodgman_exam.cpp).

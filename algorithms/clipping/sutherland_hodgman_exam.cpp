@@ -393,7 +393,8 @@ RunFacts run(const SutherlandHodgman::Input& in) {
         if (s.which == SutherlandHodgman::Case::InOut ||
             s.which == SutherlandHodgman::Case::OutIn) {
             ++f.crossings;
-            f.nice = f.nice && nice(s.I.x) && nice(s.I.y) && (nice(s.t) || read_off(s));
+            const dvec2 I = SutherlandHodgman::intersection_I(s);
+            f.nice = f.nice && nice(I.x) && nice(I.y) && (nice(s.t) || read_off(s));
             f.every_t_nice = f.every_t_nice && nice(s.t);
         }
         f.longest = std::max(f.longest, s.output.size());
