@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 namespace cg {
 
@@ -96,6 +97,52 @@ struct Handle2 {
     std::string y_field;  // ... and the y coordinate
 };
 
+// ---- 3D: drawn on the viewer's 3D canvas (orbited by the project's own arcball) ----
+// World coordinates, right-handed (x right, y up, z toward the viewer in the default view).
+// The canvas sorts everything by depth and draws back to front, so translucent surfaces and
+// labels read correctly; a scene with any 3D primitive opens the 3D canvas.
+
+struct Point3 {
+    glm::dvec3 p;
+    std::string label;
+    Style style;
+    float radius = 5.0f;  // screen pixels
+};
+
+struct Segment3 {
+    glm::dvec3 a, b;
+    std::string label;  // drawn at the midpoint
+    Style style;
+    bool arrow = false;  // arrowhead at b (a vector, an axis, a normal)
+};
+
+// A flat polygon (triangle, quad, face), filled at `alpha` in its role colour or rgba.
+// `two_sided = false` greys it out when its front (counter-clockwise) side faces away, so
+// back faces are visible as such in any view.
+struct Face3 {
+    std::vector<glm::dvec3> points;
+    Style style;
+    float alpha = 0.5f;
+    bool outline = true;
+    bool two_sided = true;
+};
+
+struct Label3 {
+    glm::dvec3 p;
+    std::string text;
+    Style style;
+};
+
+// A coordinate frame: the columns of `axes` drawn as x (red), y (green), z (blue) arrows
+// from `origin`, each `length` long, labelled "<name>x"... — world axes, rotated frames.
+struct Frame3 {
+    glm::dvec3 origin{0, 0, 0};
+    glm::dvec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+    double length = 1.0;
+    std::string name;  // "" for the world frame; "R" labels the axes R·x, R·y, R·z
+    float alpha = 1.0f;
+};
+
 struct Scene {
     std::vector<PixelGrid2> grids;        // drawn first, under everything
     std::vector<HalfPlane2> half_planes;  // then these, under the rest
@@ -105,6 +152,23 @@ struct Scene {
     std::vector<Label2> labels;
     std::vector<Handle2> handles;
 
+    // 3D content (empty for 2D algorithms). `extent3` is the radius of the region worth
+    // showing around the origin, for the canvas's initial zoom (0: fit to the content).
+    std::vector<Face3> faces3;
+    std::vector<Segment3> segments3;
+    std::vector<Point3> points3;
+    std::vector<Label3> labels3;
+    std::vector<Frame3> frames3;
+    double extent3 = 0;
+
+    bool has_3d() const {
+        return !faces3.empty() || !segments3.empty() || !points3.empty() || !labels3.empty() ||
+               !frames3.empty();
+    }
+    bool has_2d() const {
+        return !grids.empty() || !half_planes.empty() || !polygons.empty() || !segments.empty() ||
+               !points.empty() || !labels.empty();
+    }
     void clear() { *this = Scene{}; }
 };
 
