@@ -164,7 +164,7 @@ std::string list_tex(const std::vector<dvec2>& points) {
 }
 
 std::string edge_text(const SutherlandHodgman::State& s) {
-    const std::size_t m = s.in.window.size();
+    const std::size_t m = s.in->window.size();
     return "Window edge " + std::to_string(s.k) + ", W" + std::to_string(s.k) + "→W" +
            std::to_string((s.k + 1) % m) + " = " + num(s.A) + "→" + num(s.B);
 }
@@ -268,9 +268,13 @@ void SutherlandHodgman::validate(const Input& in) {
 }
 
 SutherlandHodgman::State SutherlandHodgman::start(const Input& in) {
-    validate(in);
+    return start(Shared<Input>(in));
+}
+
+SutherlandHodgman::State SutherlandHodgman::start(Shared<Input> in) {
+    validate(*in);
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -283,20 +287,20 @@ void SutherlandHodgman::advance(State& s) {
     if (s.phase == Phase::Clip) return clip_polygon_edge(s);
     switch (s.phase) {
         case Phase::Setup:  // Find the window's orientation; the input list is the polygon
-            s.window_area = signed_area(s.in.window);
+            s.window_area = signed_area(s.in->window);
             s.orient = s.window_area > 0 ? 1.0 : -1.0;
-            s.input.reserve(list_capacity(s.in));
-            s.output.reserve(list_capacity(s.in));
-            s.after_edge.reserve(s.in.window.size());
-            s.input.assign(s.in.polygon.begin(), s.in.polygon.end());
+            s.input.reserve(list_capacity(*s.in));
+            s.output.reserve(list_capacity(*s.in));
+            s.after_edge.reserve(s.in->window.size());
+            s.input.assign(s.in->polygon.begin(), s.in->polygon.end());
             s.phase = Phase::NextEdge;
             return;
         case Phase::NextEdge: {  // Take window edge A→B; S starts as the last input vertex
-            const int m = static_cast<int>(s.in.window.size());
+            const int m = static_cast<int>(s.in->window.size());
             ++s.k;
             s.j = 0;
-            s.A = s.in.window[s.k];
-            s.B = s.in.window[s.k + 1 == m ? 0 : s.k + 1];
+            s.A = s.in->window[s.k];
+            s.B = s.in->window[s.k + 1 == m ? 0 : s.k + 1];
             s.output.clear();
             // As if the edge before had just left P = the last vertex: it becomes S below.
             s.side_P = side(s.orient, s.A, s.B, s.input.back());
@@ -314,7 +318,7 @@ void SutherlandHodgman::advance(State& s) {
             std::swap(s.input, s.output);
             s.output.clear();
             if (s.input.empty()) s.phase = Phase::Done;  // nothing inside: stop
-            else if (s.k + 1 == static_cast<int>(s.in.window.size())) s.phase = Phase::Finish;
+            else if (s.k + 1 == static_cast<int>(s.in->window.size())) s.phase = Phase::Finish;
             else s.phase = Phase::NextEdge;
             return;
         case Phase::Finish:  // The last list is the clipped polygon
@@ -463,7 +467,7 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
         info.event = "done";
         info.line = kLineReturn;
         info.math = "\\text{result} = " + list_tex(s.input);
-        info.narration = "All " + std::to_string(s.in.window.size()) +
+        info.narration = "All " + std::to_string(s.in->window.size()) +
                          " window edges done: the clipped polygon is " + list_text(s.input) + ".";
         return;
     }
@@ -484,14 +488,14 @@ void SutherlandHodgman::step(State& s, StepInfo* info) {
 }
 
 SutherlandHodgman::Result SutherlandHodgman::result(const State& s) {
-    if (s.phase == Phase::Setup) return {s.in.polygon, {}};
+    if (s.phase == Phase::Setup) return {s.in->polygon, {}};
     return {s.input, s.after_edge};
 }
 
 // run_to_end's: the state is spent, so its lists move into the result as clip() moves its
 // own (copying them instead costs 1 + m allocations and copies per run, +40% in the benchmark).
 SutherlandHodgman::Result SutherlandHodgman::result(State&& s) {
-    if (s.phase == Phase::Setup) return {std::move(s.in.polygon), {}};
+    if (s.phase == Phase::Setup) return {s.in->polygon, {}};  // shared: copied
     return {std::move(s.input), std::move(s.after_edge)};
 }
 
@@ -541,8 +545,8 @@ SutherlandHodgman::Result SutherlandHodgman::clip(const std::vector<dvec2>& wind
 // ---- [draw] ----------------------------------------------------------------------------------
 
 void SutherlandHodgman::draw(const State& s, Scene& scene) {
-    const auto& w = s.in.window;
-    const auto& poly = s.in.polygon;
+    const auto& w = s.in->window;
+    const auto& poly = s.in->polygon;
     const bool finished = s.phase == Phase::Done;
     const bool clipped = s.phase == Phase::Clip || s.phase == Phase::EdgeDone;
 

@@ -53,6 +53,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/rng.hpp"
+#include "core/shared.hpp"
 #include "core/run.hpp"
 
 namespace cg {
@@ -76,7 +77,7 @@ struct SutherlandHodgman {
     enum class Case : std::uint8_t { None, InIn, InOut, OutOut, OutIn };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::Setup;
         double window_area = 0;  // signed area of the window (> 0: counter-clockwise)
         double orient = 0;       // +1 counter-clockwise window, −1 clockwise (0 before setup)
@@ -102,6 +103,7 @@ struct SutherlandHodgman {
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
     static State start(const Input& in);
+    static State start(Shared<Input> in);  // the same, sharing an input already made
     static void step(State& s, StepInfo* info);  // advance, then narrate if info is given
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);  // the current list; the clipped polygon once done

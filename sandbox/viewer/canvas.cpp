@@ -1,4 +1,5 @@
-// Sections: [view fitting] [interaction] [caption] [draw_canvas].
+// Sections: [view fitting] [interaction] [caption] [draw_canvas]: the 2D canvas, the 3D one
+// (canvas3d.cpp), or both side by side.
 #include "viewer/canvas.hpp"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "core/format.hpp"
+#include "viewer/canvas3d.hpp"
 #include "viewer/canvas_draw.hpp"
 #include "viewer/im_colour.hpp"
 #include "viewer/palette.hpp"
@@ -162,8 +164,10 @@ int interact(Session& s, const Scene& scene, const ScreenMap& map) {
 // window also how to use the canvas.
 struct Caption {
     std::string title, detail, hint;
-    Box box;
+    Box box{{0, 0}, {0, 0}};
 };
+
+Caption make_caption_box(Caption c, const ScreenMap& map, const Fonts& f);
 
 Caption make_caption(const ScreenMap& map, const Session& s, bool interactive) {
     Caption c;
@@ -177,8 +181,11 @@ Caption make_caption(const ScreenMap& map, const Session& s, bool interactive) {
     if (s.solution_hidden())  // its length would hint at the answer
         c.detail = "exam problem " + std::to_string(s.exam.problem.seed) + "  ·  solution hidden";
     if (interactive) c.hint = "wheel: zoom  ·  right-drag: pan  ·  drag ■ to edit the input";
+    return make_caption_box(c, map, s.fonts);
+}
 
-    const Fonts& f = s.fonts;
+// Sizes the caption's box for its text, in the canvas's top-left corner.
+Caption make_caption_box(Caption c, const ScreenMap& map, const Fonts& f) {
     double width = f.ui->CalcTextSizeA(f.ui->FontSize, FLT_MAX, 0, c.title.c_str()).x;
     double height = f.ui->FontSize + 12;
     for (const std::string* line : {&c.detail, &c.hint}) {
@@ -209,15 +216,12 @@ void draw_caption(ImDrawList* dl, const Caption& c, const Fonts& f) {
 
 // --- [draw_canvas] ---------------------------------------------------------------------------
 
-void draw_canvas(Session& s, bool interactive) {
-    const glm::dvec2 origin = dv(ImGui::GetCursorScreenPos());
-    const glm::dvec2 size = glm::max(dv(ImGui::GetContentRegionAvail()), glm::dvec2(1, 1));
+namespace {
+
+// The 2D canvas in `box`; returns the caption's box so the 3D canvas can keep clear of it.
+void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_caption) {
     Scene scene = s.scene();
-    if (s.canvas.fit_pending && size.x > 16 && size.y > 16) {
-        s.canvas.view = fit_view(scene, size);
-        s.canvas.fit_pending = false;
-    }
-    ScreenMap map{{origin, origin + size}, s.canvas.view};
+    ScreenMap map{box, s.canvas.view};
     int hot = -1;
     if (interactive) {
         hot = interact(s, scene, map);
@@ -230,15 +234,58 @@ void draw_canvas(Session& s, bool interactive) {
     dl->PushClipRect(im(map.canvas.min), im(map.canvas.max), true);
     dl->AddRectFilled(im(map.canvas.min), im(map.canvas.max), im_colour(kCanvasBackground));
     draw_grid(dl, map, s.fonts);
-    const Caption caption = make_caption(map, s, interactive);
+    Caption caption;
+    if (with_caption) caption = make_caption(map, s, interactive);
     draw_scene(dl, map, scene, s.fonts, hot, {caption.box.grown(4)});
+    if (with_caption) draw_caption(dl, caption, s.fonts);
+    dl->PopClipRect();
+}
+
+void draw_canvas3d(Session& s, const Box& box, bool interactive) {
+    Camera3& camera = s.canvas.camera3;
+    if (interactive && interact3(camera, box)) camera.view = fit_view3(s.scene(), box.max - box.min);
+    const Scene scene = s.scene();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->PushClipRect(im(box.min), im(box.max), true);
+    dl->AddRectFilled(im(box.min), im(box.max), im_colour(kCanvasBackground));
+    ScreenMap map{box, s.canvas.view};
+    Caption caption = make_caption(map, s, false);
+    if (interactive)
+        caption.hint = "drag: orbit (arcball)  ·  right-drag: pan  ·  wheel: zoom  ·  double-click: reset";
+    caption = make_caption_box(caption, map, s.fonts);
+    draw_scene3(dl, Projector{box, camera.view}, scene, s.fonts, {caption.box.grown(4)});
     draw_caption(dl, caption, s.fonts);
+    dl->PopClipRect();
+}
+
+}  // namespace
+
+void draw_canvas(Session& s, bool interactive) {
+    const glm::dvec2 origin = dv(ImGui::GetCursorScreenPos());
+    const glm::dvec2 size = glm::max(dv(ImGui::GetContentRegionAvail()), glm::dvec2(1, 1));
+    const Scene scene = s.scene();
+    // A scene with 3D content gets the 3D canvas; with 2D content as well (a plot, the
+    // viewport's disc), the two side by side: 3D on the left, 2D on the right.
+    const bool three = scene.has_3d(), two = !three || scene.has_2d();
+    Box box2{origin, origin + size}, box3 = box2;
+    if (three && two) {
+        const double split = std::round(size.x * 0.58);
+        box3.max.x = origin.x + split;
+        box2.min.x = origin.x + split + 2;
+    }
+    if (s.canvas.fit_pending && size.x > 16 && size.y > 16) {
+        if (two) s.canvas.view = fit_view(scene, box2.max - box2.min);
+        if (three) s.canvas.camera3.view = fit_view3(scene, box3.max - box3.min);
+        s.canvas.fit_pending = false;
+    }
+    if (three) draw_canvas3d(s, box3, interactive);
+    if (two) draw_canvas2d(s, box2, interactive, !three);
     if (!s.timeline) {
+        ImDrawList* dl = ImGui::GetWindowDrawList();
         const char* text = "Nothing to show: the input was refused (see the Input panel).";
-        const glm::dvec2 at = map.centre() - glm::dvec2(200, 10);
+        const glm::dvec2 at = (origin + size * 0.5) - glm::dvec2(200, 10);
         dl->AddText(s.fonts.ui, s.fonts.ui->FontSize, im(at), im_colour(kErrorText), text);
     }
-    dl->PopClipRect();
 }
 
 }  // namespace cg::viewer

@@ -24,6 +24,7 @@
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
 #include "viewer/fonts.hpp"
+#include "viewer/view3.hpp"
 
 namespace cg::viewer {
 
@@ -43,6 +44,7 @@ struct CanvasState {
     int dragged_handle = -1;       // index into Scene::handles while one is dragged
     glm::dvec2 grab_offset{0, 0};  // handle minus mouse, in world units: no jump on grab
     bool panning = false;
+    Camera3 camera3;  // the 3D canvas's, fitted together with the 2D view
 };
 
 // The left panel's tabs.
