@@ -17,12 +17,6 @@ std::string face_name(int k) {
     return "F" + std::to_string(k);
 }
 
-// Oblique (cabinet) projection for the picture: z recedes down-left at half length.
-constexpr double kShear = 0.35;  // ≈ ½·cos 45°
-glm::dvec2 project(glm::dvec3 p) {
-    return {p.x - kShear * p.z, p.y - kShear * p.z};
-}
-
 }  // namespace
 
 // ---- [spec] ---------------------------------------------------------------------------------
@@ -268,6 +262,9 @@ void BackfaceCull::step(State& s, StepInfo* info) {
 // ---- [draw] ---------------------------------------------------------------------------------
 
 void BackfaceCull::draw(const State& s, Scene& scene) {
+    // In 3D: each face filled by its verdict (kept green, culled faint grey, undecided faint,
+    // the one being decided orange), decided faces with their unit normals, the current face's
+    // N and V, and the viewer (the eye, or the viewing direction).
     const auto& in = *s.in;
     const int decided = static_cast<int>(s.r.culled.size());
     const int current = s.last == Phase::Face && s.k > 0 ? s.k - 1 : -1;  // the face just decided
@@ -283,72 +280,53 @@ void BackfaceCull::draw(const State& s, Scene& scene) {
         for (int i : f) c += in.vertices[static_cast<std::size_t>(i)];
         return c / static_cast<double>(f.size());
     };
-    auto outline = [&](const std::vector<int>& f) {
-        std::vector<glm::dvec2> o;
-        for (int i : f) o.push_back(project(in.vertices[static_cast<std::size_t>(i)]));
-        return o;
-    };
+    // Labels and normals only while they stay readable.
+    const bool small = in.faces.size() <= 40;
 
-    // Undecided faces thin, culled faces grey and dashed, kept faces filled green; back to front
-    // along the picture's own view (−(0.35, 0.35, 1)) so fills stack sensibly.
-    std::vector<int> order(in.faces.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        return centroid(in.faces[static_cast<std::size_t>(a)]).z <
-               centroid(in.faces[static_cast<std::size_t>(b)]).z;
-    });
-    for (int k : order) {
-        const auto& f = in.faces[static_cast<std::size_t>(k)];
-        Polygon2 poly{outline(f), {Role::Neutral, 1.0f, true}, true, false};
-        if (k < decided) {
-            if (s.r.culled[static_cast<std::size_t>(k)])
-                poly.style = {Role::Subject, 1.5f, true};
-            else
-                poly.style = {Role::Kept, 2.0f}, poly.filled = true;
-        }
-        if (k == current) poly.style = {Role::Active, 3.0f}, poly.filled = true;
-        scene.polygons.push_back(std::move(poly));
-        const bool culled = k < decided && s.r.culled[static_cast<std::size_t>(k)];
-        scene.labels.push_back({project(centroid(f)),
-                                face_name(k) + (k < decided ? (culled ? " culled" : " kept") : ""),
-                                {k == current ? Role::Active
-                                              : (k < decided ? (culled ? Role::Subject : Role::Kept)
-                                                             : Role::Neutral)}});
+    for (std::size_t k = 0; k < in.faces.size(); ++k) {
+        const auto& f = in.faces[k];
+        Face3 face;
+        for (int i : f) face.points.push_back(in.vertices[static_cast<std::size_t>(i)]);
+        const bool is_decided = static_cast<int>(k) < decided;
+        const bool culled = is_decided && s.r.culled[k];
+        Role role = Role::Neutral;
+        face.alpha = 0.08f;
+        if (is_decided) role = culled ? Role::Subject : Role::Kept, face.alpha = culled ? 0.12f : 0.45f;
+        if (static_cast<int>(k) == current) role = Role::Active, face.alpha = 0.6f;
+        face.style = {role, 1.5f};
+        scene.faces3.push_back(std::move(face));
+        if (!small) continue;
+        const glm::dvec3 c = centroid(f);
+        scene.labels3.push_back(
+            {c, face_name(static_cast<int>(k)) + (is_decided ? (culled ? " culled" : " kept") : ""),
+             {role}});
+        if (is_decided && static_cast<int>(k) != current)
+            scene.segments3.push_back({c, c + 0.15 * size * s.r.normals[k], "",
+                                       {culled ? Role::Subject : Role::Kept, 1.5f}, true});
     }
-    for (std::size_t i = 0; i < in.vertices.size(); ++i)
-        scene.points.push_back({project(in.vertices[i]), std::to_string(i), {Role::Neutral}, 3.0f});
+    if (in.vertices.size() <= 60)
+        for (std::size_t i = 0; i < in.vertices.size(); ++i)
+            scene.points3.push_back({in.vertices[i], std::to_string(i), {Role::Neutral}, 3.0f});
 
     // The current face's normal, from its centroid, and its view vector.
     if (current >= 0 && !finished) {
         const auto& f = in.faces[static_cast<std::size_t>(current)];
         const glm::dvec3 c = centroid(f);
         const glm::dvec3 u = s.r.normals[static_cast<std::size_t>(current)];
-        scene.segments.push_back(
-            {project(c), project(c + 0.3 * size * u), "N", {Role::Active, 2.5f}, true});
+        scene.segments3.push_back({c, c + 0.3 * size * u, "N", {Role::Active, 3.0f}, true});
         const glm::dvec3 p0 = in.vertices[static_cast<std::size_t>(f[0])];
         if (in.perspective)
-            scene.segments.push_back(
-                {project(in.eye), project(p0), "V", {Role::Window, 1.5f, true}, true});
+            scene.segments3.push_back({in.eye, p0, "V", {Role::Window, 1.5f, true}, true});
     }
     // The viewer.
     if (in.perspective) {
-        scene.points.push_back({project(in.eye), "eye " + num(in.eye, 4), {Role::Window}, 6.0f});
+        scene.points3.push_back({in.eye, "eye " + num(in.eye, 4), {Role::Window}, 6.0f});
     } else {
         const glm::dvec3 d = glm::normalize(in.view_dir);
-        const glm::dvec3 from = mid - 0.9 * size * d;
-        scene.segments.push_back({project(from),
-                                  project(mid - 0.45 * size * d),
-                                  "view direction " + num(in.view_dir, 4),
-                                  {Role::Window, 2.5f},
-                                  true});
+        scene.segments3.push_back({mid - 0.9 * size * d, mid - 0.45 * size * d,
+                                   "view direction " + num(in.view_dir, 4), {Role::Window, 2.5f},
+                                   true});
     }
-    glm::dvec2 below = project(in.vertices[0]), left = below;
-    for (const auto& p : in.vertices)
-        below.y = std::min(below.y, project(p).y), left.x = std::min(left.x, project(p).x);
-    scene.labels.push_back(
-        {{left.x + 0.5 * size, below.y - 0.12 * size},
-         "oblique view: screen (x, y) = (x − 0.35 z, y − 0.35 z); green kept, grey dashed culled",
-         {Role::Neutral}});
 }
 
 }  // namespace cg

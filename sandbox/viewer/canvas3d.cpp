@@ -145,7 +145,7 @@ namespace {
 
 constexpr std::uint32_t kAxisX = 0xd62728ff, kAxisY = 0x2ca02cff, kAxisZ = 0x1f77b4ff;
 constexpr std::uint32_t kBackFace = 0xa8a8a8ff;
-constexpr std::uint32_t kFloor = 0xe2e2e2ff;
+constexpr std::uint32_t kFloor = 0xe8e8e8ff;
 
 struct Line {
     glm::dvec2 a, b;
@@ -261,7 +261,7 @@ struct Collector {
     // The floor y = 0 as a faint grid round the target, and the world axes through the origin.
     void floor_and_axes(double radius) {
         const double step = nice_step(radius / 4);
-        const int n = 5;
+        const int n = 4;
         const double cx = std::round(proj.view.target.x / step) * step;
         const double cz = std::round(proj.view.target.z / step) * step;
         for (int i = -n; i <= n; ++i) {

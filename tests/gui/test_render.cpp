@@ -195,3 +195,31 @@ TEST_CASE("gui: broken lesson files do not stop the viewer, and the good ones op
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Catch::Contains("no lesson \"broken\""));
 }
+
+namespace {
+
+// A role's colour at `alpha` over the white canvas, as the 3D canvas fills faces.
+std::uint32_t over_white(std::uint32_t rgba, double alpha) {
+    auto ch = [&](int shift) {
+        const double c = (rgba >> shift & 255) * alpha + 255 * (1 - alpha);
+        return static_cast<std::uint32_t>(std::lround(c)) << shift;
+    };
+    return ch(24) | ch(16) | ch(8) | 0xffu;
+}
+
+}  // namespace
+
+TEST_CASE("gui: a 3D scene opens the 3D canvas, faces filled by their verdict", "[gui][3d]") {
+    // Back-face culling's cube seen from its eye: at the end the kept faces are green, the
+    // culled ones faint grey; the world axes are drawn in red, green and blue.
+    Image end = render_args({"backface-cull", "--size", "600x450"}, "backface-3d-end");
+    const auto kept = end.find(over_white(cg::viewer::role_rgba(cg::Role::Kept), 0.45), 12);
+    CHECK(kept.size() > 800);
+    CHECK(end.find(0xd62728ff, 40).size() > 10);  // the x axis's arrowhead
+    CHECK(end.find(cg::viewer::role_rgba(cg::Role::Window), 30).size() > 20);  // the eye
+    // Step 1 decides F0: the face being decided is orange, nothing is green yet.
+    Image first = render_args({"backface-cull", "--step", "1", "--size", "600x450"},
+                              "backface-3d-first");
+    CHECK(first.find(over_white(cg::viewer::role_rgba(cg::Role::Active), 0.6), 34).size() > 150);
+    CHECK(first.find(over_white(cg::viewer::role_rgba(cg::Role::Kept), 0.45), 12).size() < 50);
+}
