@@ -223,10 +223,11 @@ dmat4 Perspective::projection_matrix(const Input& in) {
     return m;
 }
 
-dmat4 Perspective::view_matrix(const Input& in) {
-    if (!in.look_at) return dmat4(1.0);
-    const Frame fr = view_frame(in);
-    const dvec3 z = zsign(in.convention) * fr.forward;
+namespace {
+
+// The view matrix of a look-at frame: rows r, u, ±f̂, each with translation −row · eye.
+dmat4 view_from(const Frame& fr, Convention convention) {
+    const dvec3 z = zsign(convention) * fr.forward;
     dmat4 m(1.0);
     for (int c = 0; c < 3; ++c) {
         m[c][0] = fr.right[c];
@@ -237,6 +238,12 @@ dmat4 Perspective::view_matrix(const Input& in) {
     m[3][1] = -glm::dot(fr.up, fr.eye);
     m[3][2] = -glm::dot(z, fr.eye);
     return m;
+}
+
+}  // namespace
+
+dmat4 Perspective::view_matrix(const Input& in) {
+    return in.look_at ? view_from(view_frame(in), in.convention) : dmat4(1.0);
 }
 
 void Perspective::validate(const Input& in) {
@@ -350,7 +357,7 @@ void Perspective::advance(State& s) {
         case Phase::View: {  // The look-at frame
             const Frame fr = view_frame(s.in);
             s.right = fr.right, s.up = fr.up, s.forward = fr.forward, s.eye = fr.eye;
-            r.view = view_matrix(s.in);
+            r.view = s.in.look_at ? view_from(fr, s.in.convention) : dmat4(1.0);
             s.phase = Phase::Projection;
             return;
         }

@@ -83,9 +83,9 @@ std::string Perspective::question(const Input& in) {
              std::to_string(k) + " = " + num(in.points[k]);
     q += " (clip), and their NDC after the divide (ndc; null for a point with w ≤ 0).";
     if (!in.segments.empty())
-        q += " Then clip the segment from " + num(in.segments[0][0]) + " to " +
+        q += " Also clip the segment from " + num(in.segments[0][0]) + " to " +
              num(in.segments[0][1]) + " against the near plane in clip space (z + w ≥ 0) before "
-             "dividing.";
+             "dividing (not graded: the worked solution shows it).";
     return q;
 }
 

@@ -30,7 +30,13 @@ enum Line { kLinePair = 1, kLineMapS, kLineMapT, kLineRotate, kLineAccumulate, k
 // of a few hundred unit quaternions stays near 1e-12°.
 constexpr double kSameDeg = 1e-6;
 
-dquat canonical(dquat q) { return q.w < 0 ? -q : q; }
+// −0 + 0 = +0: no "-0" in results and narration.
+double unsigned_zero(double x) { return x + 0.0; }
+
+dquat canonical(dquat q) {
+    if (q.w < 0) q = -q;
+    return {unsigned_zero(q.w), unsigned_zero(q.x), unsigned_zero(q.y), unsigned_zero(q.z)};
+}
 
 std::vector<double> quat_vec(const dquat& q) { return {q.w, q.x, q.y, q.z}; }
 
@@ -81,7 +87,8 @@ AxisAngle axis_angle(const dquat& q) {
     const dvec3 v(q.x, q.y, q.z);
     const double len = glm::length(v);
     if (len == 0) return {};
-    return {v / len, 2 * std::atan2(len, q.w) * kDeg};
+    const dvec3 axis = v / len + dvec3(0.0);  // −0 + 0 = +0
+    return {axis, 2 * std::atan2(len, q.w) * kDeg};
 }
 
 double rotation_angle_deg(const dquat& q) {
