@@ -312,8 +312,12 @@ void Perspective::validate(const Input& in) {
     for (std::size_t k = 0; k < in.points.size(); ++k) {
         const std::string f = "points[" + std::to_string(k) + "]";
         check_finite(in.points[k], f);
-        if (!finite(through(r, in.points[k]).clip))
-            throw InputError(f, "is too large to project (" + num(in.points[k]) + ")");
+        const dvec4 c = through(r, in.points[k]).clip;
+        if (!finite(c)) throw InputError(f, "is too large to project (" + num(in.points[k]) + ")");
+        // Just in front of the eye's plane (w > 0 but tiny) the divide overflows.
+        if (c.w > 0 && !finite(dvec4(dvec3(c) / c.w, 1.0)))
+            throw InputError(f, "lies too close to the eye's plane to divide (w = " + num(c.w) +
+                                    "): its NDC coordinates overflow");
     }
     for (std::size_t k = 0; k < in.segments.size(); ++k) {
         for (int e = 0; e < 2; ++e) {
@@ -780,7 +784,7 @@ void Perspective::draw(const State& s, Scene& scene) {
         scene.points3.push_back({w, point_name(k), {role}, active ? 6.0f : 5.0f});
         scene.segments3.push_back({w, fr.eye, "", {active ? Role::Active : Role::Construction, 1.0f, true}, false});
         const double depth = glm::dot(w - fr.eye, fr.forward);
-        if (depth > 0)
+        if (depth >= in.near)  // the ray to the eye crosses the near plane
             scene.points3.push_back({fr.eye + (w - fr.eye) * (in.near / depth), "", {role}, 3.0f});
     }
 

@@ -387,7 +387,10 @@ void narrate_summary(const typename TrackballDrag<K>::State& st, StepInfo& info)
                          "°, round-off): " +
                          (arcball ? "the products telescope, (u t*)(t s*) = u s*, so the "
                                     "rotation depends only on where the drag starts and ends."
-                                  : "with one pair there is no path to depend on.");
+                                  : n == 1 ? "with one pair there is no path to depend on."
+                                           : "this path happens not to matter (outside the "
+                                             "ball the virtual sphere only spins about z, and "
+                                             "those angles add up; a pause adds nothing).");
     else
         info.narration = straight + "They differ by " + num(st.path_gap_deg, 4) +
                          "°: the virtual sphere's rotation depends on the path the mouse took.";

@@ -343,6 +343,8 @@ TEST_CASE("perspective: bad input names the field", "[transforms][perspective]")
                       Catch::StartsWith("viewport[1]: must be positive"));
     CHECK_THROWS_WITH(Perspective::start(with([](auto& i) { i.points[0] = {1, 1, 1e308}; })),
                       Catch::StartsWith("points[0]: is too large to project"));
+    CHECK_THROWS_WITH(Perspective::start(with([](auto& i) { i.points[0] = {1e10, 0, 1e-300}; })),
+                      Catch::StartsWith("points[0]: lies too close to the eye's plane to divide"));
     CHECK_THROWS_WITH(Perspective::start(with([](auto& i) { i.segments = {{dvec3(1), dvec3(1)}}; })),
                       "segments[0]: has both ends at (1, 1, 1): not a segment");
     CHECK_THROWS_WITH(Perspective::start(with([](auto& i) {

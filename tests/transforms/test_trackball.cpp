@@ -270,6 +270,15 @@ TEST_CASE("trackball: exam cases worked by hand", "[transforms][arcball][virtual
         CHECK_THAT(v.steps.back().narration,
                    Catch::EndsWith("the virtual sphere does not return when the mouse does."));
     }
+    SECTION("a virtual-sphere path that stays outside the ball spins about z path-independently") {
+        // 300 × 200: (290, 100) → m = (1.4, 0), (280, 190) → (1.3, 0.9), (10, 100) → (−1.4, 0):
+        // 34.7° then 145.3° about z, 180° in all, as the straight step from the first to the last.
+        const auto v = run_traced<VirtualSphere>({{300, 200}, {{290, 100}, {280, 190}, {10, 100}}, {}});
+        CHECK(v.steps.back().event == "path-independent");
+        CHECK(v.result.net_angle_deg == Approx(180));
+        CHECK(v.result.path_gap_deg < 1e-9);
+        CHECK_THAT(v.steps.back().narration, Catch::EndsWith("a pause adds nothing)."));
+    }
     SECTION("no motion, and opposite rim points") {
         const auto v = run_traced<VirtualSphere>({{200, 200}, {{120, 130}, {120, 130}}, {}});
         CHECK(v.steps[2].event == "no-rotation");
