@@ -6,6 +6,7 @@
 #include "bench/bench_support.hpp"
 
 #include "core/rng.hpp"
+#include "transforms/normal_transform.hpp"
 #include "transforms/perspective.hpp"
 #include "transforms/trackball_drag.hpp"
 
@@ -116,6 +117,50 @@ void BM_Perspective_StateMachine(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * inputs.size());
 }
 BENCHMARK(BM_Perspective_StateMachine)->Unit(benchmark::kMillisecond);
+
+const std::vector<cg::NormalTransform::Input>& normal_maps() {
+    static const std::vector<cg::NormalTransform::Input> inputs = [] {
+        cg::Rng rng(42);
+        std::vector<cg::NormalTransform::Input> v(100'000);
+        for (auto& in : v) {
+            for (int c = 0; c < 3; ++c)
+                for (int r = 0; r < 3; ++r) in.linear[c][r] = rng.uniform(-3, 3) + (c == r ? 4 : 0);
+            in.normal = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(0.5, 1)};
+        }
+        return v;
+    }();
+    return inputs;
+}
+
+// Both without validation; the plain side computes every field of the result straight through.
+void BM_NormalTransform_Plain(benchmark::State& state) {
+    const auto& inputs = normal_maps();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) sum += cg::NormalTransform::transform(in).normal.x;
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_NormalTransform_Plain)->Unit(benchmark::kMillisecond);
+
+void BM_NormalTransform_StateMachine(benchmark::State& state) {
+    const auto& inputs = normal_maps();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) {
+            cg::NormalTransform::State s;
+            s.in = in;
+            sum += cg::run_to_end<cg::NormalTransform>(std::move(s)).normal.x;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_NormalTransform_StateMachine)->Unit(benchmark::kMillisecond);
+
+void BM_NormalTransform_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "normal-transform"); }
+BENCHMARK(BM_NormalTransform_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 void BM_VirtualSphere_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "virtual-sphere"); }
 void BM_Arcball_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "arcball"); }
