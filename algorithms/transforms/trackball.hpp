@@ -33,6 +33,7 @@ struct BallPoint {
     glm::dvec2 m;   // the mouse position in ball units (the ball is the unit disc)
     glm::dvec3 p;   // its point on the unit sphere
     bool rim;       // outside the ball: pulled onto the silhouette (p.z = 0)
+    bool operator==(const BallPoint&) const = default;
 };
 
 // The viewport is [0, width] × [0, height] pixels; width, height > 0.
