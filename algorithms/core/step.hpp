@@ -40,12 +40,21 @@ struct EventKind {
     std::string meaning;  // one line, shown as a legend and checked by the lesson tests
 };
 
+// A number in the input worth scrubbing live (the curve parameter t): the viewer shows it as
+// a slider over the canvas, and every change re-runs the algorithm at the same step.
+struct Slider {
+    std::string field;  // JSON pointer of a number in the input: "/t"
+    std::string label;  // "t"
+    double min = 0, max = 1;
+};
+
 struct Spec {
     std::string id;     // CLI and registry id: "liang-barsky"
     std::string title;  // "Liang-Barsky line clipping"
     std::string topic;  // course topic: "Line Clipping"
     std::vector<std::string> pseudocode;
     std::vector<EventKind> events;
+    std::vector<Slider> sliders = {};  // none for most algorithms
 };
 
 // Bad input, refused at the start of a run. `field` is a path into the input as the user

@@ -94,6 +94,7 @@ const Spec& Bernstein::spec() {
             {"hull", "the convex hull of the control points, and whether P(t) lies in it"},
             {"affine", "mapping the control points maps the curve: T(P(t)) = Σ B_i T(P_i)"},
         },
+        {{"/t", "t", 0, 1}},
     };
     return spec;
 }

@@ -124,6 +124,7 @@ const Spec& DeCasteljau::spec() {
             {"subdivide",
              "the triangle's two edges are the control polygons of the curve's halves"},
         },
+        {{"/t", "t", 0, 1}},
     };
     return spec;
 }

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <glm/common.hpp>
 #include <limits>
 #include <string>
@@ -122,6 +123,7 @@ int interact(Session& s, const Scene& scene, const ScreenMap& map) {
     ImGui::InvisibleButton("canvas", im(map.canvas.max - map.canvas.min),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
+    ImGui::SetItemAllowOverlap();  // the sliders drawn over the canvas take their clicks
     const ImGuiIO& io = ImGui::GetIO();
     const glm::dvec2 mouse = dv(io.MousePos);
     const bool hovered = ImGui::IsItemHovered();
@@ -258,6 +260,45 @@ void draw_canvas3d(Session& s, const Box& box, bool interactive) {
     dl->PopClipRect();
 }
 
+// The algorithm's sliders (Spec::sliders) over the canvas's bottom-left corner: dragging one
+// edits that number in the input and re-runs at the same step, so the construction follows
+// the slider. Hidden while an exam's solution is.
+void draw_sliders(Session& s, const Box& area) {
+    if (!s.algorithm || s.solution_hidden()) return;
+    const float row = ImGui::GetFrameHeight() + 4;
+    const float width = static_cast<float>(std::min(380.0, area.max.x - area.min.x - 40));
+    if (width < 80) return;
+    float y = static_cast<float>(area.max.y) - 12 - row * static_cast<float>(s.algorithm->spec->sliders.size());
+    for (const Slider& slider : s.algorithm->spec->sliders) {
+        const json::json_pointer pointer(slider.field);
+        if (!s.input.contains(pointer) || !s.input.at(pointer).is_number()) continue;
+        double v = s.input.at(pointer).get<double>();
+        const ImVec2 at(static_cast<float>(area.min.x) + 12, y);
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + width + 4, at.y + row - 1),
+                          IM_COL32(255, 255, 255, 235), 4.0f);
+        dl->AddRect(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + width + 4, at.y + row - 1),
+                    im_colour(kNoteAccent), 4.0f);
+        ImGui::SetCursorScreenPos(at);
+        ImGui::SetNextItemWidth(width);
+        ImGui::PushStyleColor(ImGuiCol_FrameBg, im_vec4(kNoteBackground));
+        const std::string format = slider.label + " = %.3f";
+        const bool changed = ImGui::SliderScalar(("##slider" + slider.field).c_str(),
+                                                 ImGuiDataType_Double, &v, &slider.min,
+                                                 &slider.max, format.c_str());
+        ImGui::PopStyleColor();
+        if (changed) {
+            // Four significant digits: the input reads 0.35, not 0.35000000000000003.
+            char text[32];
+            std::snprintf(text, sizeof text, "%.4g", v);
+            json edited = s.input;
+            edited[pointer] = std::strtod(text, nullptr);
+            if (edited != s.input) s.edit(std::move(edited));
+        }
+        y += row;
+    }
+}
+
 }  // namespace
 
 void draw_canvas(Session& s, bool interactive) {
@@ -274,12 +315,20 @@ void draw_canvas(Session& s, bool interactive) {
         box2.min.x = origin.x + split + 2;
     }
     if (s.canvas.fit_pending && size.x > 16 && size.y > 16) {
-        if (two) s.canvas.view = fit_view(scene, box2.max - box2.min);
+        if (two) {
+            // Room at the bottom for the sliders drawn over the canvas.
+            const double sliders =
+                s.algorithm ? (ImGui::GetFrameHeight() + 4) * s.algorithm->spec->sliders.size() : 0;
+            const glm::dvec2 room = box2.max - box2.min - glm::dvec2(0, sliders);
+            s.canvas.view = fit_view(scene, glm::max(room, glm::dvec2(1, 1)));
+            s.canvas.view.center.y -= sliders / 2 / s.canvas.view.zoom;
+        }
         if (three) s.canvas.camera3.view = fit_view3(scene, box3.max - box3.min);
         s.canvas.fit_pending = false;
     }
     if (three) draw_canvas3d(s, box3, interactive);
     if (two) draw_canvas2d(s, box2, interactive, !three);
+    draw_sliders(s, two ? box2 : box3);
     if (!s.timeline) {
         ImDrawList* dl = ImGui::GetWindowDrawList();
         const char* text = "Nothing to show: the input was refused (see the Input panel).";

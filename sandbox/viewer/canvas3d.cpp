@@ -101,6 +101,7 @@ bool interact3(Camera3& c, const Box& canvas) {
     ImGui::InvisibleButton("canvas3d", im(canvas.max - canvas.min),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
+    ImGui::SetItemAllowOverlap();  // the sliders drawn over the canvas take their clicks
     const ImGuiIO& io = ImGui::GetIO();
     const glm::dvec2 size = canvas.max - canvas.min;
     // The ball's coordinates: pixels from the canvas's bottom-left corner, y up.

@@ -223,3 +223,15 @@ TEST_CASE("gui: a 3D scene opens the 3D canvas, faces filled by their verdict", 
     CHECK(first.find(over_white(cg::viewer::role_rgba(cg::Role::Active), 0.6), 34).size() > 150);
     CHECK(first.find(over_white(cg::viewer::role_rgba(cg::Role::Kept), 0.45), 12).size() < 50);
 }
+
+TEST_CASE("gui: an algorithm's slider is drawn over the canvas", "[gui][slider]") {
+    // De Casteljau declares t as a slider: its light-blue bar sits along the canvas's bottom.
+    Image img = render_args({"de-casteljau", "--size", "600x400"}, "de-casteljau-slider");
+    const int bar = static_cast<int>(
+        img.find_in(cg::viewer::kNoteBackground, 0, img.height - 45, img.width, img.height, 6).size());
+    CHECK(bar > 3000);
+    // Liang-Barsky declares none.
+    Image none = render_args({"liang-barsky", "--size", "600x400"}, "liang-barsky-no-slider");
+    CHECK(none.find_in(cg::viewer::kNoteBackground, 0, none.height - 45, none.width, none.height, 6)
+              .size() < 200);
+}
