@@ -97,8 +97,6 @@ double param_value(const Quadric& s, const char* name) {
     return 1;
 }
 
-bool finite3(dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 double max_abs(dvec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
 std::string root_name(const QuadraticRoots& r, int i) {

