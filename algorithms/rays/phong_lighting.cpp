@@ -26,6 +26,7 @@ enum Line {
     kLineLight,
     kLineDiffuse,
     kLineSpecular,
+    kLineBlinn,
     kLineTotal,
 };
 
@@ -79,8 +80,8 @@ const Spec& PhongLighting::spec() {
             "I ← k_a I_a                                   ▷ ambient",
             "for each light i:  l ← (L − P)/|L − P| or −dir;  att ← 1/(c1 + c2 r + c3 r²) or 1",
             "    I += att I_i k_d max(l·n, 0)               ▷ Lambert",
-            "    if l·n > 0:  I += att I_i k_s max(r·v, 0)^p, r = −l + 2(l·n)n  (Phong)\n"
-            "                 or att I_i k_s max(h·n, 0)^p, h = (v + l)/|v + l|  (Blinn)",
+            "    Phong:  if l·n > 0:  I += att I_i k_s max(r·v, 0)^p,  r ← −l + 2(l·n)n",
+            "    Blinn:  if l·n > 0:  I += att I_i k_s max(h·n, 0)^p,  h ← (v + l)/|v + l|",
             "return I = ambient + Σ diffuse + Σ specular",
         },
         {
@@ -364,7 +365,7 @@ void narrate_specular(const PhongLighting::State& s, StepInfo& info) {
     const PhongLighting::LightTerms& t = s.out.lights.back();
     const bool rgb = s.in.rgb;
     const double p = s.in.material.shininess;
-    info.line = kLineSpecular;
+    info.line = s.in.model == Model::Phong ? kLineSpecular : kLineBlinn;
     if (!(t.n_dot_l > 0)) {
         info.event = "no-specular";
         info.narration = "The light is behind the surface (l·n = " + num(t.n_dot_l) +
@@ -387,6 +388,7 @@ void narrate_specular(const PhongLighting::State& s, StepInfo& info) {
                     ctex(t.specular, rgb);
     } else {
         info.event = "blinn-specular";
+        info.line = kLineBlinn;
         info.narration = "Blinn-Phong: h = (v + l)/|v + l| = " + num(t.h) + ", h·n = " +
                          num(t.n_dot_h) + (t.n_dot_h < 0 ? " (clamped to 0)" : "") +
                          ", (h·n)^p = " + num(std::max(t.n_dot_h, 0.0)) + "^" + num(p) + " = " +

@@ -345,7 +345,7 @@ void narrate_coefficients(const RayQuadric::State& s, StepInfo& info) {
 void narrate_discriminant(const RayQuadric::State& s, StepInfo& info) {
     const RayQuadratic& q = s.quad;
     const QuadraticRoots& r = s.roots;
-    const std::string disc = "Δ = b² − 4ac = " + num(q.b) + "² − 4·" + operand(q.a) + "·" +
+    const std::string disc = "Δ = b² − 4ac = " + operand(q.b) + "² − 4·" + operand(q.a) + "·" +
                              operand(q.c) + " = " + num(r.discriminant);
     const std::string disc_tex = "\\Delta = b^2 - 4ac = " + tex_operand(q.b) + "^2 - 4 \\cdot " +
                                  tex_operand(q.a) + " \\cdot " + tex_operand(q.c) + " = " +
@@ -436,8 +436,9 @@ void narrate_nearest(const RayQuadric::State& s, StepInfo& info) {
         switch (s.verdict[i]) {
             case Verdict::Behind: w += " is not > ε (behind or at the eye)"; break;
             case Verdict::OutsideSlab:
-                w += " hits at model z = " + num(z) + ", outside the slab [" +
-                     num(s.prepared.zmin) + ", " + num(s.prepared.zmax) + "]";
+                w += " hits at model z = " + num(z) + ", outside the slab " +
+                     (std::isfinite(s.prepared.zmin) ? num(s.prepared.zmin) + " ≤ z" : "z") +
+                     (std::isfinite(s.prepared.zmax) ? " ≤ " + num(s.prepared.zmax) : "");
                 break;
             case Verdict::Chosen: w += " is the nearest hit"; break;
             case Verdict::Farther: w += " is farther"; break;
@@ -718,6 +719,7 @@ void RayQuadric::draw(const State& s, Scene& scene) {
     for (int i = 0; i <= kSamples; ++i) {
         const double t = lo + (hi - lo) * i / kSamples;
         const double v = (f.a * t + f.b) * t + f.c;
+        if (!std::isfinite(v)) continue;  // only for absurdly long rays
         f_max = std::max(f_max, std::fabs(v));
         curve.push_back({t, v});
     }
