@@ -166,7 +166,6 @@ PhongLighting::State PhongLighting::start(const Input& in) {
     validate(in);
     State s;
     s.in = in;
-    s.out.rgb = in.rgb;
     return s;
 }
 
@@ -221,6 +220,7 @@ void PhongLighting::advance(State& s) {
     Result& o = s.out;
     switch (s.phase) {
         case Phase::View:  // The unit normal and the view vector
+            o.rgb = s.in.rgb;
             o.n = unit_of(s.in.normal);
             o.v = unit_of(s.in.eye - s.in.point);
             o.lights.reserve(s.in.lights.size());

@@ -67,7 +67,6 @@ PreparedQuadric prepare(const Quadric& s) {
         const dmat3 linear(s.world_from_model);
         p.linear_inv = glm::inverse(linear);
         p.translation = dvec3(s.world_from_model[3]);
-        p.normal_from_model = glm::transpose(p.linear_inv);
     }
     return p;
 }
@@ -230,7 +229,7 @@ QuadraticRoots solve_quadratic(const RayQuadratic& q) {
         h.t = t;
         h.point = origin + t * direction;
         const dvec3 g = gradient(s.f, q.origin + t * q.direction);
-        h.normal = unit(s.transformed ? s.normal_from_model * g : g);
+        h.normal = unit(s.transformed ? g * s.linear_inv : g);
         h.has_normal = h.normal != dvec3(0.0);
         break;
     }

@@ -78,7 +78,7 @@ struct PreparedQuadric {
     bool transformed = false;        // world_from_model is not the identity
     glm::dmat3 linear_inv{1.0};      // M⁻¹'s 3×3 part (model_from_world for directions)
     glm::dvec3 translation{0.0};     // M's translation column
-    glm::dmat3 normal_from_model{1.0};  // (M⁻¹)ᵀ
+    // Normals go back by (M⁻¹)ᵀ: in glm that is the row vector ∇F times M⁻¹, ∇F * linear_inv.
     double zmin = -Quadric::kInf, zmax = Quadric::kInf;
     bool operator==(const PreparedQuadric&) const = default;
 };

@@ -199,6 +199,17 @@ RayQuadric::State RayQuadric::start(const Input& in) {
 
 // ---- [advance] ------------------------------------------------------------------------------
 
+namespace {
+
+// ∇F at the hit, model space, and carried to the world by (M⁻¹)ᵀ (not normalised).
+dvec3 model_gradient(const RayQuadric::State& s) { return gradient(s.prepared.f, s.model_point); }
+dvec3 world_gradient(const RayQuadric::State& s) {
+    const dvec3 g = model_gradient(s);
+    return s.prepared.transformed ? g * s.prepared.linear_inv : g;
+}
+
+}  // namespace
+
 void RayQuadric::advance(State& s) {
     s.last = s.phase;
     switch (s.phase) {
@@ -246,9 +257,7 @@ void RayQuadric::advance(State& s) {
             s.phase = Phase::Normal;
             return;
         case Phase::Normal:  // The normal from the gradient, back to world space
-            s.grad = gradient(s.prepared.f, s.model_point);
-            s.world_grad = s.prepared.transformed ? s.prepared.normal_from_model * s.grad : s.grad;
-            s.hit.normal = unit(s.world_grad);
+            s.hit.normal = unit(world_gradient(s));
             s.hit.has_normal = s.hit.normal != dvec3(0.0);
             s.phase = Phase::Done;
             return;
@@ -479,27 +488,28 @@ void narrate_normal(const RayQuadric::State& s, StepInfo& info) {
     else
         grad_sym += sh.minus_z ? "-1" : "0";
     grad_sym += "\\right)";
-    const std::string at = "∇F(" + num(s.model_point) + ") = " + num(s.grad);
+    const dvec3 grad = model_gradient(s), world_grad = world_gradient(s);
+    const std::string at = "∇F(" + num(s.model_point) + ") = " + num(grad);
     if (!s.hit.has_normal) {
         info.event = "apex";
         info.line = kLineNormal;
         info.narration = at + ": the gradient vanishes at the cone's apex, where the surface "
                               "has no tangent plane, so there is no normal.";
-        info.math = grad_sym + " = " + tex(s.grad) + " = \\mathbf{0}";
+        info.math = grad_sym + " = " + tex(grad) + " = \\mathbf{0}";
         return;
     }
     info.event = "normal";
     info.line = kLineNormal;
     if (s.prepared.transformed) {
         info.narration = at + "; back to world space by the inverse transpose, (M⁻¹)ᵀ∇F = " +
-                         num(s.world_grad) + " (M itself would tilt it off the surface under "
+                         num(world_grad) + " (M itself would tilt it off the surface under "
                          "non-uniform scale or shear); normalised n = " + num(s.hit.normal) + ".";
-        info.math = grad_sym + " = " + tex(s.grad) + ",\\quad (M^{-1})^T \\nabla F = " +
-                    matrix_tex(s.prepared.normal_from_model) + column_tex(s.grad) + " = " +
-                    tex(s.world_grad) + ",\\quad n = " + tex(s.hit.normal);
+        info.math = grad_sym + " = " + tex(grad) + ",\\quad (M^{-1})^T \\nabla F = " +
+                    matrix_tex(glm::transpose(s.prepared.linear_inv)) + column_tex(grad) + " = " +
+                    tex(world_grad) + ",\\quad n = " + tex(s.hit.normal);
     } else {
         info.narration = at + ", normalised n = ∇F/|∇F| = " + num(s.hit.normal) + ".";
-        info.math = grad_sym + " = " + tex(s.grad) + ",\\quad n = \\frac{\\nabla F}{|\\nabla F|} = " +
+        info.math = grad_sym + " = " + tex(grad) + ",\\quad n = \\frac{\\nabla F}{|\\nabla F|} = " +
                     tex(s.hit.normal);
     }
 }
@@ -524,7 +534,7 @@ void fill_vars(const RayQuadric::State& s, StepInfo& info) {
     if (s.last >= Phase::Nearest && s.hit.hit) info.vars.push_back({"t", s.hit.t});
     if (s.last >= Phase::HitPoint) info.vars.push_back({"P", vec(s.hit.point)});
     if (s.last >= Phase::Normal) {
-        info.vars.push_back({"grad_F", vec(s.grad)});
+        info.vars.push_back({"grad_F", vec(model_gradient(s))});
         if (s.hit.has_normal) info.vars.push_back({"n", vec(s.hit.normal)});
     }
 }

@@ -55,8 +55,6 @@ struct RayQuadric {
         QuadraticRoots roots;    // the case, Δ and the roots
         std::array<Verdict, 2> verdict{Verdict::Pending, Verdict::Pending};
         glm::dvec3 model_point{0.0};  // the hit in model space
-        glm::dvec3 grad{0.0};         // ∇F there, model space
-        glm::dvec3 world_grad{0.0};   // (M⁻¹)ᵀ ∇F, before normalising
         QuadricHit hit;               // filled as the steps go
         bool operator==(const State&) const = default;
     };
