@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
+#include "rays/quadric.hpp"  // unit()
 
 namespace cg {
 
@@ -32,13 +33,7 @@ enum Line {
 
 double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-// A unit vector along v without overflow or underflow (v ≠ 0).
-dvec3 unit_of(dvec3 v) {
-    const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-    if (m == 0) return dvec3(0.0);
-    v /= m;
-    return v / std::sqrt(dot(v, v));
-}
+dvec3 unit_of(dvec3 v) { return unit(v); }
 
 void check_finite3(dvec3 v, const std::string& field) {
     for (int i = 0; i < 3; ++i)

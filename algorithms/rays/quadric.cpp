@@ -145,13 +145,6 @@ void validate_quadric(const Quadric& s, const std::string& prefix) {
 
 // ---- [intersection] -------------------------------------------------------------------------
 
-glm::dvec3 unit(glm::dvec3 v) {
-    const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-    if (m == 0) return dvec3(0.0);
-    v /= m;
-    return v / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-}
-
 RayQuadratic ray_quadratic(const PreparedQuadric& s, dvec3 origin, dvec3 direction) {
     RayQuadratic q;
     if (s.transformed) {

@@ -37,7 +37,9 @@
 // lies in the z slab.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -146,7 +148,16 @@ inline double eval_F(const QuadricCoefficients& f, glm::dvec3 p) {
 inline glm::dvec3 gradient(const QuadricCoefficients& f, glm::dvec3 p) {
     return {2 * f.A * p.x, 2 * f.B * p.y, 2 * f.C * p.z + f.D};
 }
-// A unit vector along v without overflow or underflow; (0, 0, 0) for v = 0.
-glm::dvec3 unit(glm::dvec3 v);
+// A unit vector along v without overflow or underflow; (0, 0, 0) for v = 0. The usual
+// v/|v| when |v|² is a comfortable number (a unit axis stays exact: √(x²) = |x|), else v is
+// first scaled by its largest component.
+inline glm::dvec3 unit(glm::dvec3 v) {
+    const double len2 = v.x * v.x + v.y * v.y + v.z * v.z;
+    if (len2 > 1e-290 && len2 < 1e290) return v / std::sqrt(len2);
+    const double m = std::max(std::max(std::fabs(v.x), std::fabs(v.y)), std::fabs(v.z));
+    if (m == 0) return glm::dvec3(0.0);
+    v /= m;
+    return v / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+}
 
 }  // namespace cg
