@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
@@ -31,9 +30,13 @@ enum Line {
     kLineTotal,
 };
 
-double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double dot(dvec3 a, dvec3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
-dvec3 unit_of(dvec3 v) { return unit(v); }
+dvec3 unit_of(dvec3 v) {
+    return unit(v);
+}
 
 void check_finite3(dvec3 v, const std::string& field) {
     for (int i = 0; i < 3; ++i)
@@ -49,8 +52,8 @@ void check_color(const Color& c, bool rgb, const std::string& field, const char*
         if (!std::isfinite(c[i]))
             throw InputError(f, "must be a finite number (got " + num(c[i]) + ")");
         if (c[i] < 0)
-            throw InputError(f, std::string("must not be negative: ") + what + " (got " +
-                                    num(c[i]) + ")");
+            throw InputError(
+                f, std::string("must not be negative: ") + what + " (got " + num(c[i]) + ")");
         if (c[i] > 1e100) throw InputError(f, "is too large (got " + num(c[i]) + ")");
     }
 }
@@ -59,7 +62,9 @@ void check_color(const Color& c, bool rgb, const std::string& field, const char*
 std::string ctext(const Color& c, bool rgb, int digits = 6) {
     return rgb ? num(c, digits) : num(c.x, digits);
 }
-std::string ctex(const Color& c, bool rgb) { return rgb ? tex(c) : tex(c.x); }
+std::string ctex(const Color& c, bool rgb) {
+    return rgb ? tex(c) : tex(c.x);
+}
 
 }  // namespace
 
@@ -104,9 +109,11 @@ void PhongLighting::validate(const Input& in) {
     if (in.normal == dvec3(0.0))
         throw InputError("normal", "must not be the zero vector: the surface needs a normal");
     if (in.eye == in.point)
-        throw InputError("eye", "must differ from point: the view direction v = (E − P)/|E − P| "
-                                "is undefined when the eye is at the point");
-    if (!std::isfinite(glm::length(in.eye - in.point)) || !std::isfinite(glm::length(in.normal) + 1))
+        throw InputError("eye",
+                         "must differ from point: the view direction v = (E − P)/|E − P| "
+                         "is undefined when the eye is at the point");
+    if (!std::isfinite(glm::length(in.eye - in.point)) ||
+        !std::isfinite(glm::length(in.normal) + 1))
         throw InputError("eye", "is too far from the point for double precision");
     check_color(in.ambient, in.rgb, "ambient", "an intensity");
     check_color(in.material.ka, in.rgb, "material.ka", "a reflection coefficient");
@@ -137,8 +144,9 @@ void PhongLighting::validate(const Input& in) {
         }
         check_finite3(L.position, f + ".position");
         if (L.position == in.point)
-            throw InputError(f + ".position", "must differ from point: the light's direction l "
-                                              "is undefined when it sits on the surface point");
+            throw InputError(f + ".position",
+                             "must differ from point: the light's direction l "
+                             "is undefined when it sits on the surface point");
         for (int k = 0; k < 3; ++k) {
             const std::string af = f + ".attenuation[" + std::to_string(k) + "]";
             if (!std::isfinite(L.attenuation[k]))
@@ -152,8 +160,10 @@ void PhongLighting::validate(const Input& in) {
         const double r = glm::length(L.position - in.point);
         const double den = L.attenuation.x + L.attenuation.y * r + L.attenuation.z * r * r;
         if (!std::isfinite(r) || !std::isfinite(den) || !(den > 0) || !std::isfinite(1 / den))
-            throw InputError(f + ".position", "is too far from or too close to the point for "
-                                              "double precision (distance " + num(r) + ")");
+            throw InputError(f + ".position",
+                             "is too far from or too close to the point for "
+                             "double precision (distance " +
+                                 num(r) + ")");
     }
 }
 
@@ -190,8 +200,8 @@ void diffuse_term(const PhongLighting::Input& in, dvec3 n, PhongLighting::LightT
 }
 
 // Both reflection vectors are computed (the result reports both); the model picks one.
-void specular_term(const PhongLighting::Input& in, dvec3 n, dvec3 v,
-                   PhongLighting::LightTerms& t, const PhongLighting::Light& L) {
+void specular_term(const PhongLighting::Input& in, dvec3 n, dvec3 v, PhongLighting::LightTerms& t,
+                   const PhongLighting::Light& L) {
     t.r = 2 * t.n_dot_l * n - t.l;
     t.r_dot_v = dot(t.r, v);
     t.h = unit_of(v + t.l);
@@ -279,21 +289,22 @@ void PhongLighting::step(State& s, StepInfo* info) {
 
 namespace {
 
-std::string light_name(int k) { return "light " + std::to_string(k); }
+std::string light_name(int k) {
+    return "light " + std::to_string(k);
+}
 
 void narrate_view(const PhongLighting::State& s, StepInfo& info) {
     const auto& o = s.out;
     info.event = "view";
     info.line = kLineView;
     const double nv = dot(o.n, o.v);
-    info.narration = "n = " + num(s.in.normal) + "/|n| = " + num(o.n) + "; v = (E − P)/|E − P| = " +
-                     num(s.in.eye - s.in.point) + "/" + num(glm::length(s.in.eye - s.in.point)) +
-                     " = " + num(o.v) +
-                     (nv < 0 ? ". n·v = " + num(nv) +
-                                   " < 0: the eye looks at the back of the surface."
-                             : ".");
-    info.math = "n = \\frac{" + tex(s.in.normal) + "}{" + tex(glm::length(s.in.normal)) + "} = " +
-                tex(o.n) + ",\\quad v = \\frac{E - P}{|E - P|} = " + tex(o.v);
+    info.narration =
+        "n = " + num(s.in.normal) + "/|n| = " + num(o.n) +
+        "; v = (E − P)/|E − P| = " + num(s.in.eye - s.in.point) + "/" +
+        num(glm::length(s.in.eye - s.in.point)) + " = " + num(o.v) +
+        (nv < 0 ? ". n·v = " + num(nv) + " < 0: the eye looks at the back of the surface." : ".");
+    info.math = "n = \\frac{" + tex(s.in.normal) + "}{" + tex(glm::length(s.in.normal)) +
+                "} = " + tex(o.n) + ",\\quad v = \\frac{E - P}{|E - P|} = " + tex(o.v);
 }
 
 void narrate_ambient(const PhongLighting::State& s, StepInfo& info) {
@@ -313,8 +324,8 @@ void narrate_light(const PhongLighting::State& s, StepInfo& info) {
     info.line = kLineLight;
     if (L.directional) {
         info.event = "directional-light";
-        info.narration = light_name(s.k) + " is directional, travelling along " +
-                         num(L.direction) + ": l = −dir/|dir| = " + num(t.l) +
+        info.narration = light_name(s.k) + " is directional, travelling along " + num(L.direction) +
+                         ": l = −dir/|dir| = " + num(t.l) +
                          ", no attenuation (its energy does not spread out).";
         info.math = "l = -\\frac{" + tex(L.direction) + "}{|\\cdot|} = " + tex(t.l) +
                     ",\\quad \\text{att} = 1";
@@ -322,15 +333,15 @@ void narrate_light(const PhongLighting::State& s, StepInfo& info) {
     }
     const dvec3 c = L.attenuation;
     info.event = "point-light";
-    info.narration = light_name(s.k) + " at " + num(L.position) + ": l = (L − P)/|L − P| = " +
-                     num(t.l) + ", distance r = " + num(t.distance) +
+    info.narration = light_name(s.k) + " at " + num(L.position) +
+                     ": l = (L − P)/|L − P| = " + num(t.l) + ", distance r = " + num(t.distance) +
                      ", attenuation 1/(c1 + c2·r + c3·r²) = 1/(" + num(c.x) + " + " + num(c.y) +
-                     "·" + num(t.distance) + " + " + num(c.z) + "·" + num(t.distance) + "²) = " +
-                     num(t.attenuation) + ".";
+                     "·" + num(t.distance) + " + " + num(c.z) + "·" + num(t.distance) +
+                     "²) = " + num(t.attenuation) + ".";
     info.math = "l = \\frac{L - P}{|L - P|} = " + tex(t.l) + ",\\quad r = " + tex(t.distance) +
                 ",\\quad \\text{att} = \\frac{1}{" + tex(c.x) + " + " + tex(c.y) + " \\cdot " +
-                tex(t.distance) + " + " + tex(c.z) + " \\cdot " + tex(t.distance) + "^2} = " +
-                tex(t.attenuation);
+                tex(t.distance) + " + " + tex(c.z) + " \\cdot " + tex(t.distance) +
+                "^2} = " + tex(t.attenuation);
 }
 
 void narrate_diffuse(const PhongLighting::State& s, StepInfo& info) {
@@ -342,7 +353,8 @@ void narrate_diffuse(const PhongLighting::State& s, StepInfo& info) {
         info.event = "light-behind";
         info.narration = "l·n = " + num(t.n_dot_l) + " ≤ 0: " + light_name(s.k) +
                          " is behind the surface (or grazing it) and lights nothing here.";
-        info.math = "l \\cdot n = " + tex(t.n_dot_l) + " \\le 0 \\Rightarrow k_d \\max(l \\cdot n, 0) = 0";
+        info.math =
+            "l \\cdot n = " + tex(t.n_dot_l) + " \\le 0 \\Rightarrow k_d \\max(l \\cdot n, 0) = 0";
         return;
     }
     info.event = "diffuse";
@@ -368,29 +380,28 @@ void narrate_specular(const PhongLighting::State& s, StepInfo& info) {
         info.math = "l \\cdot n \\le 0 \\Rightarrow \\text{specular} = 0";
         return;
     }
-    const std::string tail = " · " + num(t.attenuation) + " · " + ctext(L.intensity, rgb) +
-                             " · " + ctext(s.in.material.ks, rgb) + " = " +
-                             ctext(t.specular, rgb) + ".";
+    const std::string tail = " · " + num(t.attenuation) + " · " + ctext(L.intensity, rgb) + " · " +
+                             ctext(s.in.material.ks, rgb) + " = " + ctext(t.specular, rgb) + ".";
     if (s.in.model == Model::Phong) {
         info.event = "phong-specular";
         info.narration = "Phong: r = −l + 2(l·n)n = " + num(t.r) + ", r·v = " + num(t.r_dot_v) +
-                         (t.r_dot_v < 0 ? " (clamped to 0)" : "") + ", (r·v)^p = " +
-                         num(std::max(t.r_dot_v, 0.0)) + "^" + num(p) + " = " +
+                         (t.r_dot_v < 0 ? " (clamped to 0)" : "") +
+                         ", (r·v)^p = " + num(std::max(t.r_dot_v, 0.0)) + "^" + num(p) + " = " +
                          num(std::pow(std::max(t.r_dot_v, 0.0), p)) + "; specular = that" + tail;
-        info.math = "r = -l + 2(l \\cdot n)n = " + tex(t.r) + ",\\quad (r \\cdot v)^p = " +
-                    tex(std::max(t.r_dot_v, 0.0)) + "^{" + tex(p) + "} = " +
-                    tex(std::pow(std::max(t.r_dot_v, 0.0), p)) + ",\\quad \\text{att}\\, I\\, k_s\\, (r \\cdot v)^p = " +
-                    ctex(t.specular, rgb);
+        info.math = "r = -l + 2(l \\cdot n)n = " + tex(t.r) +
+                    ",\\quad (r \\cdot v)^p = " + tex(std::max(t.r_dot_v, 0.0)) + "^{" + tex(p) +
+                    "} = " + tex(std::pow(std::max(t.r_dot_v, 0.0), p)) +
+                    ",\\quad \\text{att}\\, I\\, k_s\\, (r \\cdot v)^p = " + ctex(t.specular, rgb);
     } else {
         info.event = "blinn-specular";
         info.line = kLineBlinn;
-        info.narration = "Blinn-Phong: h = (v + l)/|v + l| = " + num(t.h) + ", h·n = " +
-                         num(t.n_dot_h) + (t.n_dot_h < 0 ? " (clamped to 0)" : "") +
+        info.narration = "Blinn-Phong: h = (v + l)/|v + l| = " + num(t.h) +
+                         ", h·n = " + num(t.n_dot_h) + (t.n_dot_h < 0 ? " (clamped to 0)" : "") +
                          ", (h·n)^p = " + num(std::max(t.n_dot_h, 0.0)) + "^" + num(p) + " = " +
                          num(std::pow(std::max(t.n_dot_h, 0.0), p)) + "; specular = that" + tail;
-        info.math = "h = \\frac{v + l}{|v + l|} = " + tex(t.h) + ",\\quad (h \\cdot n)^p = " +
-                    tex(std::max(t.n_dot_h, 0.0)) + "^{" + tex(p) + "} = " +
-                    tex(std::pow(std::max(t.n_dot_h, 0.0), p)) +
+        info.math = "h = \\frac{v + l}{|v + l|} = " + tex(t.h) +
+                    ",\\quad (h \\cdot n)^p = " + tex(std::max(t.n_dot_h, 0.0)) + "^{" + tex(p) +
+                    "} = " + tex(std::pow(std::max(t.n_dot_h, 0.0), p)) +
                     ",\\quad \\text{att}\\, I\\, k_s\\, (h \\cdot n)^p = " + ctex(t.specular, rgb);
     }
 }
@@ -425,8 +436,7 @@ void fill_vars(const PhongLighting::State& s, StepInfo& info) {
         info.vars.push_back({"light", static_cast<long long>(s.k)});
         info.vars.push_back({"l", vec(t.l)});
         info.vars.push_back({"attenuation", t.attenuation});
-        if (s.last != Phase::LightDir)
-            info.vars.push_back({"n_dot_l", t.n_dot_l});
+        if (s.last != Phase::LightDir) info.vars.push_back({"n_dot_l", t.n_dot_l});
         if (s.last == Phase::Specular || s.last == Phase::Total) {
             if (s.in.model == Model::Phong) {
                 info.vars.push_back({"r", vec(t.r)});
@@ -447,13 +457,25 @@ void fill_vars(const PhongLighting::State& s, StepInfo& info) {
 void PhongLighting::narrate(const State& s, StepInfo& info) {
     info.math.clear();
     switch (s.last) {
-        case Phase::View: narrate_view(s, info); break;
-        case Phase::Ambient: narrate_ambient(s, info); break;
-        case Phase::LightDir: narrate_light(s, info); break;
-        case Phase::Diffuse: narrate_diffuse(s, info); break;
-        case Phase::Specular: narrate_specular(s, info); break;
+        case Phase::View:
+            narrate_view(s, info);
+            break;
+        case Phase::Ambient:
+            narrate_ambient(s, info);
+            break;
+        case Phase::LightDir:
+            narrate_light(s, info);
+            break;
+        case Phase::Diffuse:
+            narrate_diffuse(s, info);
+            break;
+        case Phase::Specular:
+            narrate_specular(s, info);
+            break;
         case Phase::Total:
-        case Phase::Done: narrate_total(s, info); break;
+        case Phase::Done:
+            narrate_total(s, info);
+            break;
     }
     fill_vars(s, info);
 }
@@ -473,12 +495,12 @@ void PhongLighting::draw(const State& s, Scene& scene) {
     t1 = unit_of(t1);
     const dvec3 t2 = glm::cross(n, t1);
     const double w = 0.6 * size;
-    scene.faces3.push_back({{P - w * t1 - w * t2, P + w * t1 - w * t2, P + w * t1 + w * t2,
-                             P - w * t1 + w * t2},
-                            {Role::Subject, 1.0f},
-                            0.3f,
-                            true,
-                            false});
+    scene.faces3.push_back(
+        {{P - w * t1 - w * t2, P + w * t1 - w * t2, P + w * t1 + w * t2, P - w * t1 + w * t2},
+         {Role::Subject, 1.0f},
+         0.3f,
+         true,
+         false});
     scene.points3.push_back({P, "P", {Role::Subject}, 6.0f});
     scene.points3.push_back({in.eye, "eye", {Role::Neutral}, 5.0f});
     scene.segments3.push_back({P, P + size * n, "n", {Role::Neutral, 2.0f}, true});
@@ -492,8 +514,11 @@ void PhongLighting::draw(const State& s, Scene& scene) {
         if (L.directional) {
             const dvec3 d = unit_of(L.direction);
             const dvec3 from = P - 1.8 * size * d;
-            scene.segments3.push_back({from, from + 0.8 * size * d, light_name(i) + " (directional)",
-                                       {role, 1.5f}, true});
+            scene.segments3.push_back({from,
+                                       from + 0.8 * size * d,
+                                       light_name(i) + " (directional)",
+                                       {role, 1.5f},
+                                       true});
         } else {
             scene.points3.push_back({L.position, light_name(i), {role}, 7.0f});
             scene.segments3.push_back({L.position, P, "", {role, 1.0f, true}, false});
@@ -524,14 +549,14 @@ void PhongLighting::draw(const State& s, Scene& scene) {
         // Half-width: cos^p θ = 1/2 at θ = acos(2^(−1/p)).
         if (pp > 0) {
             const double half = std::acos(std::pow(0.5, 1 / pp)) * 180 / 3.141592653589793;
-            scene.labels.push_back({{half / 90, 0.5}, label + ": half-width " + num(half, 3) + "°",
-                                    {role}});
+            scene.labels.push_back(
+                {{half / 90, 0.5}, label + ": half-width " + num(half, 3) + "°", {role}});
         }
     };
     scene.segments.push_back({{-1.05, 0}, {1.1, 0}, "θ", {Role::Neutral, 1.0f}, true});
     scene.segments.push_back({{0, 0}, {0, 1.15}, "", {Role::Neutral, 1.0f}, true});
-    scene.labels.push_back({{-1, 1.15}, "cos^p θ: the highlight's fall-off (θ from 0 to ±90°)",
-                            {Role::Neutral}});
+    scene.labels.push_back(
+        {{-1, 1.15}, "cos^p θ: the highlight's fall-off (θ from 0 to ±90°)", {Role::Neutral}});
     scene.labels.push_back({{-1, -0.08}, "−90°", {Role::Neutral}});
     scene.labels.push_back({{1, -0.08}, "90°", {Role::Neutral}});
     if (p > 0) curve(p / 4, Role::Construction, 1.0f, "p = " + num(p / 4, 3));

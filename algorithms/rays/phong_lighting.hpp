@@ -23,10 +23,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
@@ -39,9 +38,9 @@ struct PhongLighting {
 
     struct Light {
         bool directional = false;
-        glm::dvec3 position{0.0};   // a point light's position (world)
-        glm::dvec3 direction{0.0};  // a directional light's direction of travel
-        Color intensity{1.0};       // I_i, ≥ 0
+        glm::dvec3 position{0.0};         // a point light's position (world)
+        glm::dvec3 direction{0.0};        // a directional light's direction of travel
+        Color intensity{1.0};             // I_i, ≥ 0
         glm::dvec3 attenuation{1, 0, 0};  // c1, c2, c3 ≥ 0, not all 0; point lights only
         bool operator==(const Light&) const = default;
     };
@@ -52,7 +51,7 @@ struct PhongLighting {
     };
     struct Input {
         Model model = Model::Phong;
-        glm::dvec3 point{0.0};   // P
+        glm::dvec3 point{0.0};       // P
         glm::dvec3 normal{0, 0, 1};  // n (any length > 0)
         glm::dvec3 eye{0, 0, 1};     // E ≠ P
         Color ambient{0.0};          // I_a
@@ -63,10 +62,10 @@ struct PhongLighting {
     };
 
     struct LightTerms {
-        glm::dvec3 l{0.0}, r{0.0}, h{0.0};  // unit (h = 0 when v + l = 0)
+        glm::dvec3 l{0.0}, r{0.0}, h{0.0};             // unit (h = 0 when v + l = 0)
         double n_dot_l = 0, r_dot_v = 0, n_dot_h = 0;  // raw, signed
-        double distance = 0;     // |L − P| for a point light; 0 for a directional one
-        double attenuation = 1;  // 1/(c1 + c2 r + c3 r²); 1 for a directional light
+        double distance = 0;                // |L − P| for a point light; 0 for a directional one
+        double attenuation = 1;             // 1/(c1 + c2 r + c3 r²); 1 for a directional light
         Color diffuse{0.0}, specular{0.0};  // this light's two terms
         bool operator==(const LightTerms&) const = default;
     };
@@ -106,7 +105,7 @@ struct PhongLighting {
     // The whole model as one plain function (benchmark; a tracer's shading).
     static Result shade(const Input& in);
 
-private:
+  private:
     static void advance(State& s);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
 };

@@ -21,28 +21,33 @@ const T& pick(Rng& rng, const std::array<T, N>& values) {
     return values[static_cast<std::size_t>(rng.integer(0, static_cast<long long>(N) - 1))];
 }
 
-double tenth(Rng& rng, int lo, int hi) { return static_cast<double>(rng.integer(lo, hi)) / 10; }
+double tenth(Rng& rng, int lo, int hi) {
+    return static_cast<double>(rng.integer(lo, hi)) / 10;
+}
 
 // A 3-4-5 direction in the upper half-space z ≥ 0 (before turning to the normal's frame).
 dvec3 nice_up(Rng& rng) {
     static const std::array<dvec3, 9> dirs{{{0, 0, 1},
-                                             {0.6, 0, 0.8},
-                                             {-0.6, 0, 0.8},
-                                             {0, 0.6, 0.8},
-                                             {0, -0.8, 0.6},
-                                             {0.8, 0, 0.6},
-                                             {-0.8, 0, 0.6},
-                                             {0.48, 0.64, 0.6},
-                                             {0, 0.8, 0.6}}};
+                                            {0.6, 0, 0.8},
+                                            {-0.6, 0, 0.8},
+                                            {0, 0.6, 0.8},
+                                            {0, -0.8, 0.6},
+                                            {0.8, 0, 0.6},
+                                            {-0.8, 0, 0.6},
+                                            {0.48, 0.64, 0.6},
+                                            {0, 0.8, 0.6}}};
     return pick(rng, dirs);
 }
 
 // The world axis the normal points along, and a map from "up = z" to it.
 dvec3 turn(dvec3 v, int axis, double sign) {
     switch (axis) {
-        case 0: return {sign * v.z, v.x, v.y};
-        case 1: return {v.y, sign * v.z, v.x};
-        default: return {v.x, v.y, sign * v.z};
+        case 0:
+            return {sign * v.z, v.x, v.y};
+        case 1:
+            return {v.y, sign * v.z, v.x};
+        default:
+            return {v.x, v.y, sign * v.z};
     }
 }
 
@@ -85,8 +90,8 @@ PhongLighting::Input PhongLighting::exam_input(Rng& rng) {
         } else {
             L.position = in.point + static_cast<double>(rng.integer(1, 3)) * 5 * dir;
             if (rng.chance(0.3))
-                L.attenuation = pick(rng, std::array<dvec3, 3>{{{1, 0.1, 0.01}, {0.5, 0.1, 0},
-                                                                {1, 0, 0.04}}});
+                L.attenuation =
+                    pick(rng, std::array<dvec3, 3>{{{1, 0.1, 0.01}, {0.5, 0.1, 0}, {1, 0, 0.04}}});
         }
         in.lights.push_back(L);
     }
@@ -98,9 +103,10 @@ std::string PhongLighting::question(const Input& in) {
     std::string q = std::string("Compute the ") +
                     (in.model == Model::BlinnPhong ? "Blinn-Phong" : "Phong") +
                     " colour at P = " + num(in.point) + " with normal " + num(in.normal) +
-                    ", seen from the eye E = " + num(in.eye) + ". Ambient light I_a = " +
-                    color_text(in.ambient, rgb) + "; material k_a = " +
-                    color_text(in.material.ka, rgb) + ", k_d = " + color_text(in.material.kd, rgb) +
+                    ", seen from the eye E = " + num(in.eye) +
+                    ". Ambient light I_a = " + color_text(in.ambient, rgb) +
+                    "; material k_a = " + color_text(in.material.ka, rgb) +
+                    ", k_d = " + color_text(in.material.kd, rgb) +
                     ", k_s = " + color_text(in.material.ks, rgb) +
                     ", shininess p = " + num(in.material.shininess) + ". ";
     for (std::size_t i = 0; i < in.lights.size(); ++i) {
@@ -116,7 +122,8 @@ std::string PhongLighting::question(const Input& in) {
         q += ". ";
     }
     q += "Give the ambient, diffuse and specular terms (summed over the lights) and the "
-         "intensity" + std::string(rgb ? " as [r, g, b]" : "") +
+         "intensity" +
+         std::string(rgb ? " as [r, g, b]" : "") +
          ". Negative dot products count as 0, and a light behind the surface adds no highlight.";
     return q;
 }

@@ -69,8 +69,9 @@ struct JsonIo<PhongLighting> {
             l.only({"position", "direction", "intensity", "attenuation"});
             PhongLighting::Light light;
             if (l.has("position") == l.has("direction"))
-                throw InputError(l.path(), "needs exactly one of \"position\" (a point light) and "
-                                           "\"direction\" (a directional light)");
+                throw InputError(l.path(),
+                                 "needs exactly one of \"position\" (a point light) and "
+                                 "\"direction\" (a directional light)");
             light.directional = l.has("direction");
             if (light.directional)
                 light.direction = l.point3("direction");
@@ -140,6 +141,8 @@ struct JsonIo<PhongLighting> {
     }
 };
 
-Algorithm phong_lighting_algorithm() { return make_algorithm<PhongLighting>(); }
+Algorithm phong_lighting_algorithm() {
+    return make_algorithm<PhongLighting>();
+}
 
 }  // namespace cg

@@ -3,10 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <vector>
 
 #include "core/format.hpp"
 #include "core/step.hpp"
@@ -20,24 +19,36 @@ using glm::dvec3;
 
 const char* quadric_kind_id(QuadricKind k) {
     switch (k) {
-        case QuadricKind::Sphere: return "sphere";
-        case QuadricKind::Ellipsoid: return "ellipsoid";
-        case QuadricKind::Paraboloid: return "paraboloid";
-        case QuadricKind::Hyperboloid: return "hyperboloid";
-        case QuadricKind::Cone: return "cone";
-        case QuadricKind::Cylinder: return "cylinder";
+        case QuadricKind::Sphere:
+            return "sphere";
+        case QuadricKind::Ellipsoid:
+            return "ellipsoid";
+        case QuadricKind::Paraboloid:
+            return "paraboloid";
+        case QuadricKind::Hyperboloid:
+            return "hyperboloid";
+        case QuadricKind::Cone:
+            return "cone";
+        case QuadricKind::Cylinder:
+            return "cylinder";
     }
     return "?";
 }
 
 const char* quadric_kind_name(QuadricKind k) {
     switch (k) {
-        case QuadricKind::Sphere: return "sphere";
-        case QuadricKind::Ellipsoid: return "ellipsoid";
-        case QuadricKind::Paraboloid: return "elliptic paraboloid";
-        case QuadricKind::Hyperboloid: return "hyperboloid of one sheet";
-        case QuadricKind::Cone: return "elliptic cone";
-        case QuadricKind::Cylinder: return "elliptic cylinder";
+        case QuadricKind::Sphere:
+            return "sphere";
+        case QuadricKind::Ellipsoid:
+            return "ellipsoid";
+        case QuadricKind::Paraboloid:
+            return "elliptic paraboloid";
+        case QuadricKind::Hyperboloid:
+            return "hyperboloid of one sheet";
+        case QuadricKind::Cone:
+            return "elliptic cone";
+        case QuadricKind::Cylinder:
+            return "elliptic cylinder";
     }
     return "?";
 }
@@ -47,12 +58,18 @@ const char* quadric_kind_name(QuadricKind k) {
 QuadricCoefficients coefficients(const Quadric& s) {
     auto inv2 = [](double v) { return 1 / (v * v); };
     switch (s.kind) {
-        case QuadricKind::Sphere: return {1, 1, 1, 0, -s.r * s.r};
-        case QuadricKind::Ellipsoid: return {inv2(s.a), inv2(s.b), inv2(s.c), 0, -1};
-        case QuadricKind::Paraboloid: return {inv2(s.p), inv2(s.q), 0, -1, 0};
-        case QuadricKind::Hyperboloid: return {inv2(s.a), inv2(s.b), -inv2(s.c), 0, -1};
-        case QuadricKind::Cone: return {inv2(s.p), inv2(s.q), -inv2(s.r), 0, 0};
-        case QuadricKind::Cylinder: return {inv2(s.p), inv2(s.q), 0, 0, -1};
+        case QuadricKind::Sphere:
+            return {1, 1, 1, 0, -s.r * s.r};
+        case QuadricKind::Ellipsoid:
+            return {inv2(s.a), inv2(s.b), inv2(s.c), 0, -1};
+        case QuadricKind::Paraboloid:
+            return {inv2(s.p), inv2(s.q), 0, -1, 0};
+        case QuadricKind::Hyperboloid:
+            return {inv2(s.a), inv2(s.b), -inv2(s.c), 0, -1};
+        case QuadricKind::Cone:
+            return {inv2(s.p), inv2(s.q), -inv2(s.r), 0, 0};
+        case QuadricKind::Cylinder:
+            return {inv2(s.p), inv2(s.q), 0, 0, -1};
     }
     return {};
 }
@@ -82,12 +99,16 @@ struct NamedParam {
 
 std::vector<NamedParam> params_of(const Quadric& s) {
     switch (s.kind) {
-        case QuadricKind::Sphere: return {{"r", s.r}};
+        case QuadricKind::Sphere:
+            return {{"r", s.r}};
         case QuadricKind::Ellipsoid:
-        case QuadricKind::Hyperboloid: return {{"a", s.a}, {"b", s.b}, {"c", s.c}};
+        case QuadricKind::Hyperboloid:
+            return {{"a", s.a}, {"b", s.b}, {"c", s.c}};
         case QuadricKind::Paraboloid:
-        case QuadricKind::Cylinder: return {{"p", s.p}, {"q", s.q}};
-        case QuadricKind::Cone: return {{"p", s.p}, {"q", s.q}, {"r", s.r}};
+        case QuadricKind::Cylinder:
+            return {{"p", s.p}, {"q", s.q}};
+        case QuadricKind::Cone:
+            return {{"p", s.p}, {"q", s.q}, {"r", s.r}};
     }
     return {};
 }
@@ -100,21 +121,21 @@ void validate_quadric(const Quadric& s, const std::string& prefix) {
         if (!std::isfinite(np.value))
             throw InputError(field, "must be a finite number (got " + num(np.value) + ")");
         if (np.value <= 0)
-            throw InputError(field, "must be positive: it is a semi-axis length (got " +
-                                        num(np.value) + ")");
+            throw InputError(
+                field, "must be positive: it is a semi-axis length (got " + num(np.value) + ")");
         // 1/v² must be a normal, finite number.
         const double inv = 1 / (np.value * np.value);
         if (!std::isfinite(inv) || inv == 0 || !std::isnormal(np.value * np.value))
-            throw InputError(field, "is too large or too small to square (got " + num(np.value) +
-                                        ")");
+            throw InputError(field,
+                             "is too large or too small to square (got " + num(np.value) + ")");
     }
     const glm::dmat4& m = s.world_from_model;  // m[column][row]
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c)
             if (!std::isfinite(m[c][r]))
-                throw InputError(prefix + ".transform[" + std::to_string(r) + "][" +
-                                     std::to_string(c) + "]",
-                                 "must be a finite number (got " + num(m[c][r]) + ")");
+                throw InputError(
+                    prefix + ".transform[" + std::to_string(r) + "][" + std::to_string(c) + "]",
+                    "must be a finite number (got " + num(m[c][r]) + ")");
     if (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1)
         throw InputError(prefix + ".transform[3]",
                          "must be [0, 0, 0, 1]: the model transform must be affine (got [" +
@@ -139,8 +160,8 @@ void validate_quadric(const Quadric& s, const std::string& prefix) {
     if (std::isnan(s.zmax) || s.zmax == -Quadric::kInf)
         throw InputError(prefix + ".zmax", "must be a finite number (got " + num(s.zmax) + ")");
     if (!(s.zmin < s.zmax))
-        throw InputError(prefix + ".zmax", "must be greater than zmin (" + num(s.zmax) +
-                                               " ≤ " + num(s.zmin) + "): the slab is empty");
+        throw InputError(prefix + ".zmax", "must be greater than zmin (" + num(s.zmax) + " ≤ " +
+                                               num(s.zmin) + "): the slab is empty");
 }
 
 // ---- [intersection] -------------------------------------------------------------------------

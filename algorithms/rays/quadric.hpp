@@ -41,16 +41,22 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <string>
-
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
+#include <string>
 
 namespace cg {
 
-enum class QuadricKind : std::uint8_t { Sphere, Ellipsoid, Paraboloid, Hyperboloid, Cone, Cylinder };
+enum class QuadricKind : std::uint8_t {
+    Sphere,
+    Ellipsoid,
+    Paraboloid,
+    Hyperboloid,
+    Cone,
+    Cylinder
+};
 
 const char* quadric_kind_id(QuadricKind k);    // "sphere", "paraboloid", ... (the JSON "type")
 const char* quadric_kind_name(QuadricKind k);  // "elliptic paraboloid", ...
@@ -77,9 +83,9 @@ QuadricCoefficients coefficients(const Quadric& s);
 // What the intersection needs, computed once per surface: a tracer keeps one per object.
 struct PreparedQuadric {
     QuadricCoefficients f;
-    bool transformed = false;        // world_from_model is not the identity
-    glm::dmat3 linear_inv{1.0};      // M⁻¹'s 3×3 part (model_from_world for directions)
-    glm::dvec3 translation{0.0};     // M's translation column
+    bool transformed = false;     // world_from_model is not the identity
+    glm::dmat3 linear_inv{1.0};   // M⁻¹'s 3×3 part (model_from_world for directions)
+    glm::dvec3 translation{0.0};  // M's translation column
     // Normals go back by (M⁻¹)ᵀ: in glm that is the row vector ∇F times M⁻¹, ∇F * linear_inv.
     double zmin = -Quadric::kInf, zmax = Quadric::kInf;
     bool operator==(const PreparedQuadric&) const = default;
@@ -124,10 +130,10 @@ struct QuadricHit {
     bool hit = false;
     std::array<double, 2> roots{0, 0};  // every real root, ascending (a double root once)
     int root_count = 0;
-    double t = 0;                  // the nearest root > t_min inside the slab (if hit)
-    glm::dvec3 point{0.0};         // E + t d, world space (if hit)
-    glm::dvec3 normal{0.0};        // unit, ∇F's direction, world space (if has_normal)
-    bool has_normal = false;       // false at a miss and where ∇F = 0 (a cone's apex)
+    double t = 0;             // the nearest root > t_min inside the slab (if hit)
+    glm::dvec3 point{0.0};    // E + t d, world space (if hit)
+    glm::dvec3 normal{0.0};   // unit, ∇F's direction, world space (if has_normal)
+    bool has_normal = false;  // false at a miss and where ∇F = 0 (a cone's apex)
     bool operator==(const QuadricHit&) const = default;
 };
 

@@ -41,12 +41,18 @@ struct Shape {
 
 Shape shape_of(QuadricKind k) {
     switch (k) {
-        case QuadricKind::Sphere: return {"", "", "", false, false, "r^2"};
-        case QuadricKind::Ellipsoid: return {"a", "b", "c", false, false, "1"};
-        case QuadricKind::Paraboloid: return {"p", "q", nullptr, false, true, nullptr};
-        case QuadricKind::Hyperboloid: return {"a", "b", "c", true, false, "1"};
-        case QuadricKind::Cone: return {"p", "q", "r", true, false, nullptr};
-        case QuadricKind::Cylinder: return {"p", "q", nullptr, false, false, "1"};
+        case QuadricKind::Sphere:
+            return {"", "", "", false, false, "r^2"};
+        case QuadricKind::Ellipsoid:
+            return {"a", "b", "c", false, false, "1"};
+        case QuadricKind::Paraboloid:
+            return {"p", "q", nullptr, false, true, nullptr};
+        case QuadricKind::Hyperboloid:
+            return {"a", "b", "c", true, false, "1"};
+        case QuadricKind::Cone:
+            return {"p", "q", "r", true, false, nullptr};
+        case QuadricKind::Cylinder:
+            return {"p", "q", nullptr, false, false, "1"};
     }
     return {"", "", "", false, false, nullptr};
 }
@@ -61,8 +67,7 @@ std::string over(const std::string& e, const char* param) {
 std::string axis_sum(const Shape& sh, const std::string& pattern) {
     auto term = [&](char axis) {
         std::string t = pattern;
-        for (auto pos = t.find('@'); pos != std::string::npos; pos = t.find('@'))
-            t[pos] = axis;
+        for (auto pos = t.find('@'); pos != std::string::npos; pos = t.find('@')) t[pos] = axis;
         return t;
     };
     std::string s = over(term('x'), sh.x) + " + " + over(term('y'), sh.y);
@@ -87,17 +92,25 @@ std::string coord_term(const char* coord, double param, bool latex) {
 
 double param_value(const Quadric& s, const char* name) {
     switch (name[0]) {
-        case 'r': return s.r;
-        case 'a': return s.a;
-        case 'b': return s.b;
-        case 'c': return s.c;
-        case 'p': return s.p;
-        case 'q': return s.q;
+        case 'r':
+            return s.r;
+        case 'a':
+            return s.a;
+        case 'b':
+            return s.b;
+        case 'c':
+            return s.c;
+        case 'p':
+            return s.p;
+        case 'q':
+            return s.q;
     }
     return 1;
 }
 
-double max_abs(dvec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+double max_abs(dvec3 v) {
+    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+}
 
 std::string root_name(const QuadraticRoots& r, int i) {
     return r.count == 1 ? "t" : (i == 0 ? "t₁" : "t₂");
@@ -115,12 +128,10 @@ void check_point(dvec3 v, const std::string& field) {
 std::string quadric_equation(const Quadric& s, bool latex) {
     const Shape sh = shape_of(s.kind);
     if (s.kind == QuadricKind::Sphere)
-        return latex ? "x^2 + y^2 + z^2 = " + tex(s.r * s.r)
-                     : "x² + y² + z² = " + num(s.r * s.r);
+        return latex ? "x^2 + y^2 + z^2 = " + tex(s.r * s.r) : "x² + y² + z² = " + num(s.r * s.r);
     std::string lhs = coord_term("x", param_value(s, sh.x), latex) + " + " +
                       coord_term("y", param_value(s, sh.y), latex);
-    if (sh.z)
-        lhs += (sh.z_negative ? " − " : " + ") + coord_term("z", param_value(s, sh.z), latex);
+    if (sh.z) lhs += (sh.z_negative ? " − " : " + ") + coord_term("z", param_value(s, sh.z), latex);
     if (latex)
         for (auto pos = lhs.find("−"); pos != std::string::npos; pos = lhs.find("−"))
             lhs.replace(pos, std::string("−").size(), "-");
@@ -179,11 +190,13 @@ void RayQuadric::validate(const Input& in) {
     const RayQuadratic q = ray_quadratic(p, in.origin, in.direction);
     const double d = max_abs(q.direction), o = max_abs(q.origin);
     if (!(d >= 1e-100 && d <= 1e100))
-        throw InputError("direction", "is too small or too large for double precision in model "
-                                      "space (largest component " + num(d) + ")");
+        throw InputError("direction",
+                         "is too small or too large for double precision in model "
+                         "space (largest component " +
+                             num(d) + ")");
     if (!(o <= 1e100))
-        throw InputError("origin", "is too far away for double precision in model space (" +
-                                       num(o) + ")");
+        throw InputError("origin",
+                         "is too far away for double precision in model space (" + num(o) + ")");
     if (!std::isfinite(q.a) || !std::isfinite(q.b) || !std::isfinite(q.c) ||
         !std::isfinite(q.b * q.b - 4 * q.a * q.c))
         throw InputError("origin", "and direction give a quadratic that overflows (a = " +
@@ -202,7 +215,9 @@ RayQuadric::State RayQuadric::start(const Input& in) {
 namespace {
 
 // ∇F at the hit, model space, and carried to the world by (M⁻¹)ᵀ (not normalised).
-dvec3 model_gradient(const RayQuadric::State& s) { return gradient(s.prepared.f, s.model_point); }
+dvec3 model_gradient(const RayQuadric::State& s) {
+    return gradient(s.prepared.f, s.model_point);
+}
 dvec3 world_gradient(const RayQuadric::State& s) {
     const dvec3 g = model_gradient(s);
     return s.prepared.transformed ? g * s.prepared.linear_inv : g;
@@ -295,8 +310,12 @@ std::string column_tex(dvec3 v) {
 }
 
 // "2", "(−3)": a number after an operator.
-std::string operand(double v) { return v < 0 ? "(" + num(v) + ")" : num(v); }
-std::string tex_operand(double v) { return v < 0 ? "(" + tex(v) + ")" : tex(v); }
+std::string operand(double v) {
+    return v < 0 ? "(" + num(v) + ")" : num(v);
+}
+std::string tex_operand(double v) {
+    return v < 0 ? "(" + tex(v) + ")" : tex(v);
+}
 
 std::string quadratic_text(const RayQuadratic& q) {
     return num(q.a) + "·t² + " + operand(q.b) + "·t + " + operand(q.c) + " = 0";
@@ -307,8 +326,8 @@ std::string quadratic_tex(const RayQuadratic& q) {
 
 void narrate_model(const RayQuadric::State& s, StepInfo& info) {
     const Quadric& qd = s.in.quadric;
-    const std::string surface = std::string(quadric_kind_name(qd.kind)) + " " +
-                                quadric_equation(qd, false);
+    const std::string surface =
+        std::string(quadric_kind_name(qd.kind)) + " " + quadric_equation(qd, false);
     if (!s.prepared.transformed) {
         info.event = "no-transform";
         info.line = kLineModel;
@@ -341,14 +360,15 @@ void narrate_coefficients(const RayQuadric::State& s, StepInfo& info) {
     if (sh.rhs) c_sym += std::string(" - ") + sh.rhs;
     info.event = "coefficients";
     info.line = kLineCoefficients;
-    info.narration = "Substitute E_m + t·d_m into F: a = " + num(q.a) + " (the t² terms), b = " +
-                     num(q.b) + ", c = F(E_m) = " + num(q.c) + ", so " + quadratic_text(q) +
-                     (q.c < 0 ? ". c < 0: the eye is inside the surface (F < 0)."
+    info.narration = "Substitute E_m + t·d_m into F: a = " + num(q.a) +
+                     " (the t² terms), b = " + num(q.b) + ", c = F(E_m) = " + num(q.c) + ", so " +
+                     quadratic_text(q) +
+                     (q.c < 0    ? ". c < 0: the eye is inside the surface (F < 0)."
                       : q.c == 0 ? ". c = 0: the eye is on the surface."
                                  : ".");
-    info.math = "F = " + F_tex(sh) + ";\\quad a = " + a_sym + " = " + tex(q.a) + ",\\quad b = " +
-                b_sym + " = " + tex(q.b) + ",\\quad c = " + c_sym + " = " + tex(q.c) +
-                ";\\quad " + quadratic_tex(q);
+    info.math = "F = " + F_tex(sh) + ";\\quad a = " + a_sym + " = " + tex(q.a) +
+                ",\\quad b = " + b_sym + " = " + tex(q.b) + ",\\quad c = " + c_sym + " = " +
+                tex(q.c) + ";\\quad " + quadratic_tex(q);
 }
 
 void narrate_discriminant(const RayQuadric::State& s, StepInfo& info) {
@@ -370,9 +390,8 @@ void narrate_discriminant(const RayQuadric::State& s, StepInfo& info) {
             info.event = "tangent";
             info.line = kLineDiscriminant;
             info.narration = disc + ": the line touches the surface (a double root).";
-            info.math = disc_tex + (r.discriminant == 0 && q.b * q.b != 4 * q.a * q.c
-                                        ? " \\approx 0"
-                                        : "");
+            info.math =
+                disc_tex + (r.discriminant == 0 && q.b * q.b != 4 * q.a * q.c ? " \\approx 0" : "");
             return;
         case QuadraticCase::NoRoots:
             info.event = "no-roots";
@@ -387,7 +406,8 @@ void narrate_discriminant(const RayQuadric::State& s, StepInfo& info) {
             info.narration = "a = " + num(q.a) +
                              ": the t² terms cancel (the ray runs parallel to a line of the "
                              "surface's asymptotic directions, e.g. its axis), leaving the "
-                             "linear equation " + num(q.b) + "·t + " + operand(q.c) + " = 0.";
+                             "linear equation " +
+                             num(q.b) + "·t + " + operand(q.c) + " = 0.";
             info.math = "a = 0:\\quad " + tex(q.b) + " t + " + tex_operand(q.c) + " = 0";
             return;
         case QuadraticCase::NoSolution:
@@ -401,8 +421,9 @@ void narrate_discriminant(const RayQuadric::State& s, StepInfo& info) {
         case QuadraticCase::InSurface:
             info.event = "in-surface";
             info.line = kLineLinear;
-            info.narration = "a = b = c = 0: every t solves, the whole line lies in the surface "
-                             "(along a ruling). There is no isolated hit to shade: a miss.";
+            info.narration =
+                "a = b = c = 0: every t solves, the whole line lies in the surface "
+                "(along a ruling). There is no isolated hit to shade: a miss.";
             info.math = "a = b = c = 0";
             return;
     }
@@ -414,10 +435,10 @@ void narrate_roots(const RayQuadric::State& s, StepInfo& info) {
     info.event = "roots";
     if (r.kind == QuadraticCase::Linear) {
         info.line = kLineLinear;
-        info.narration = "t = −c/b = −" + operand(q.c) + "/" + operand(q.b) + " = " +
-                         num(r.t[0]) + ".";
-        info.math = "t = -\\frac{c}{b} = -\\frac{" + tex(q.c) + "}{" + tex(q.b) + "} = " +
-                    tex(r.t[0]);
+        info.narration =
+            "t = −c/b = −" + operand(q.c) + "/" + operand(q.b) + " = " + num(r.t[0]) + ".";
+        info.math =
+            "t = -\\frac{c}{b} = -\\frac{" + tex(q.c) + "}{" + tex(q.b) + "} = " + tex(r.t[0]);
         return;
     }
     info.line = kLineRoots;
@@ -428,12 +449,14 @@ void narrate_roots(const RayQuadric::State& s, StepInfo& info) {
         return;
     }
     const double h = -0.5 * (q.b + std::copysign(std::sqrt(r.discriminant), q.b));
-    info.narration = "q = −(b + sign(b)·√Δ)/2 = " + num(h) + " (adding numbers of one sign, so "
-                     "nothing cancels); the roots q/a and c/q are t₁ = " + num(r.t[0]) +
-                     " and t₂ = " + num(r.t[1]) + ".";
+    info.narration = "q = −(b + sign(b)·√Δ)/2 = " + num(h) +
+                     " (adding numbers of one sign, so "
+                     "nothing cancels); the roots q/a and c/q are t₁ = " +
+                     num(r.t[0]) + " and t₂ = " + num(r.t[1]) + ".";
     info.math = "q = -\\frac{b + \\operatorname{sign}(b)\\sqrt{\\Delta}}{2} = " + tex(h) +
-                ",\\quad \\frac{q}{a} = " + tex(h / q.a) + ",\\quad \\frac{c}{q} = " +
-                tex(q.c / h) + ";\\quad t_1 = " + tex(r.t[0]) + ",\\ t_2 = " + tex(r.t[1]);
+                ",\\quad \\frac{q}{a} = " + tex(h / q.a) +
+                ",\\quad \\frac{c}{q} = " + tex(q.c / h) + ";\\quad t_1 = " + tex(r.t[0]) +
+                ",\\ t_2 = " + tex(r.t[1]);
 }
 
 void narrate_nearest(const RayQuadric::State& s, StepInfo& info) {
@@ -443,15 +466,22 @@ void narrate_nearest(const RayQuadric::State& s, StepInfo& info) {
         const double z = s.quad.origin.z + r.t[i] * s.quad.direction.z;
         std::string w = root_name(r, i) + " = " + num(r.t[i]);
         switch (s.verdict[i]) {
-            case Verdict::Behind: w += " is not > ε (behind or at the eye)"; break;
+            case Verdict::Behind:
+                w += " is not > ε (behind or at the eye)";
+                break;
             case Verdict::OutsideSlab:
                 w += " hits at model z = " + num(z) + ", outside the slab " +
                      (std::isfinite(s.prepared.zmin) ? num(s.prepared.zmin) + " ≤ z" : "z") +
                      (std::isfinite(s.prepared.zmax) ? " ≤ " + num(s.prepared.zmax) : "");
                 break;
-            case Verdict::Chosen: w += " is the nearest hit"; break;
-            case Verdict::Farther: w += " is farther"; break;
-            case Verdict::Pending: break;
+            case Verdict::Chosen:
+                w += " is the nearest hit";
+                break;
+            case Verdict::Farther:
+                w += " is farther";
+                break;
+            case Verdict::Pending:
+                break;
         }
         why += (i ? "; " : "") + w;
     }
@@ -471,18 +501,17 @@ void narrate_point(const RayQuadric::State& s, StepInfo& info) {
     const dvec3 E = s.in.origin, d = s.in.direction, P = s.hit.point;
     info.event = "hit-point";
     info.line = kLinePoint;
-    info.narration = "P = E + t·d = " + num(E) + " + " + num(s.hit.t) + "·" + num(d) + " = " +
-                     num(P) + (s.prepared.transformed ? " (in model space " +
-                                                            num(s.model_point) + ")"
-                                                      : "") +
-                     "; F there is " + num(eval_F(s.prepared.f, s.model_point), 3) + ".";
+    info.narration =
+        "P = E + t·d = " + num(E) + " + " + num(s.hit.t) + "·" + num(d) + " = " + num(P) +
+        (s.prepared.transformed ? " (in model space " + num(s.model_point) + ")" : "") +
+        "; F there is " + num(eval_F(s.prepared.f, s.model_point), 3) + ".";
     info.math = "P = " + tex(E) + " + " + tex(s.hit.t) + " \\cdot " + tex(d) + " = " + tex(P);
 }
 
 void narrate_normal(const RayQuadric::State& s, StepInfo& info) {
     const Shape sh = shape_of(s.in.quadric.kind);
-    std::string grad_sym = "\\nabla F = \\left(" + over("2x", sh.x) + ", " + over("2y", sh.y) +
-                           ", ";
+    std::string grad_sym =
+        "\\nabla F = \\left(" + over("2x", sh.x) + ", " + over("2y", sh.y) + ", ";
     if (sh.z)
         grad_sym += std::string(sh.z_negative ? "-" : "") + over("2z", sh.z);
     else
@@ -493,24 +522,27 @@ void narrate_normal(const RayQuadric::State& s, StepInfo& info) {
     if (!s.hit.has_normal) {
         info.event = "apex";
         info.line = kLineNormal;
-        info.narration = at + ": the gradient vanishes at the cone's apex, where the surface "
-                              "has no tangent plane, so there is no normal.";
+        info.narration = at +
+                         ": the gradient vanishes at the cone's apex, where the surface "
+                         "has no tangent plane, so there is no normal.";
         info.math = grad_sym + " = " + tex(grad) + " = \\mathbf{0}";
         return;
     }
     info.event = "normal";
     info.line = kLineNormal;
     if (s.prepared.transformed) {
-        info.narration = at + "; back to world space by the inverse transpose, (M⁻¹)ᵀ∇F = " +
-                         num(world_grad) + " (M itself would tilt it off the surface under "
-                         "non-uniform scale or shear); normalised n = " + num(s.hit.normal) + ".";
+        info.narration =
+            at + "; back to world space by the inverse transpose, (M⁻¹)ᵀ∇F = " + num(world_grad) +
+            " (M itself would tilt it off the surface under "
+            "non-uniform scale or shear); normalised n = " +
+            num(s.hit.normal) + ".";
         info.math = grad_sym + " = " + tex(grad) + ",\\quad (M^{-1})^T \\nabla F = " +
                     matrix_tex(glm::transpose(s.prepared.linear_inv)) + column_tex(grad) + " = " +
                     tex(world_grad) + ",\\quad n = " + tex(s.hit.normal);
     } else {
         info.narration = at + ", normalised n = ∇F/|∇F| = " + num(s.hit.normal) + ".";
-        info.math = grad_sym + " = " + tex(grad) + ",\\quad n = \\frac{\\nabla F}{|\\nabla F|} = " +
-                    tex(s.hit.normal);
+        info.math = grad_sym + " = " + tex(grad) +
+                    ",\\quad n = \\frac{\\nabla F}{|\\nabla F|} = " + tex(s.hit.normal);
     }
 }
 
@@ -544,14 +576,28 @@ void fill_vars(const RayQuadric::State& s, StepInfo& info) {
 void RayQuadric::narrate(const State& s, StepInfo& info) {
     info.math.clear();
     switch (s.last) {
-        case Phase::ToModel: narrate_model(s, info); break;
-        case Phase::Coefficients: narrate_coefficients(s, info); break;
-        case Phase::Discriminant: narrate_discriminant(s, info); break;
-        case Phase::Roots: narrate_roots(s, info); break;
-        case Phase::Nearest: narrate_nearest(s, info); break;
-        case Phase::HitPoint: narrate_point(s, info); break;
+        case Phase::ToModel:
+            narrate_model(s, info);
+            break;
+        case Phase::Coefficients:
+            narrate_coefficients(s, info);
+            break;
+        case Phase::Discriminant:
+            narrate_discriminant(s, info);
+            break;
+        case Phase::Roots:
+            narrate_roots(s, info);
+            break;
+        case Phase::Nearest:
+            narrate_nearest(s, info);
+            break;
+        case Phase::HitPoint:
+            narrate_point(s, info);
+            break;
         case Phase::Normal:
-        case Phase::Done: narrate_normal(s, info); break;
+        case Phase::Done:
+            narrate_normal(s, info);
+            break;
     }
     fill_vars(s, info);
 }
@@ -562,12 +608,16 @@ namespace {
 
 double largest_param(const Quadric& q) {
     switch (q.kind) {
-        case QuadricKind::Sphere: return q.r;
+        case QuadricKind::Sphere:
+            return q.r;
         case QuadricKind::Ellipsoid:
-        case QuadricKind::Hyperboloid: return std::max({q.a, q.b, q.c});
+        case QuadricKind::Hyperboloid:
+            return std::max({q.a, q.b, q.c});
         case QuadricKind::Paraboloid:
-        case QuadricKind::Cylinder: return std::max(q.p, q.q);
-        case QuadricKind::Cone: return std::max({q.p, q.q, q.r});
+        case QuadricKind::Cylinder:
+            return std::max(q.p, q.q);
+        case QuadricKind::Cone:
+            return std::max({q.p, q.q, q.r});
     }
     return 1;
 }
@@ -597,7 +647,8 @@ dvec3 surface_point(const Quadric& q, double phi, double z) {
             const double k = std::fabs(z) / q.r;
             return {q.p * k * c, q.q * k * s, z};
         }
-        case QuadricKind::Cylinder: return {q.p * c, q.q * s, z};
+        case QuadricKind::Cylinder:
+            return {q.p * c, q.q * s, z};
     }
     return {0, 0, 0};
 }
@@ -632,14 +683,22 @@ void RayQuadric::draw(const State& s, Scene& scene) {
         double reach = 2 * L;
         if (have_roots)
             for (int i = 0; i < s.roots.count; ++i)
-                reach = std::max(reach, 1.25 * std::fabs(model.origin.z +
-                                                          s.roots.t[i] * model.direction.z));
+                reach = std::max(
+                    reach, 1.25 * std::fabs(model.origin.z + s.roots.t[i] * model.direction.z));
         reach = std::min(reach, 50 * L);
         switch (q.kind) {
-            case QuadricKind::Sphere: z_lo = -q.r, z_hi = q.r; break;
-            case QuadricKind::Ellipsoid: z_lo = -q.c, z_hi = q.c; break;
-            case QuadricKind::Paraboloid: z_lo = 0, z_hi = reach; break;
-            default: z_lo = -reach, z_hi = reach; break;
+            case QuadricKind::Sphere:
+                z_lo = -q.r, z_hi = q.r;
+                break;
+            case QuadricKind::Ellipsoid:
+                z_lo = -q.c, z_hi = q.c;
+                break;
+            case QuadricKind::Paraboloid:
+                z_lo = 0, z_hi = reach;
+                break;
+            default:
+                z_lo = -reach, z_hi = reach;
+                break;
         }
         z_lo = std::max(z_lo, q.zmin);
         z_hi = std::min(z_hi, q.zmax);
@@ -665,21 +724,19 @@ void RayQuadric::draw(const State& s, Scene& scene) {
             const double z0 = z_at(j), z1 = z_at(j + 1);
             for (int i = 0; i < kAround; ++i) {
                 const double p0 = two_pi * i / kAround, p1 = two_pi * (i + 1) / kAround;
-                scene.faces3.push_back({{to_world(q, surface_point(q, p0, z0)),
-                                         to_world(q, surface_point(q, p1, z0)),
-                                         to_world(q, surface_point(q, p1, z1)),
-                                         to_world(q, surface_point(q, p0, z1))},
-                                        {Role::Subject, 1.0f},
-                                        0.18f,
-                                        true,
-                                        true});
+                scene.faces3.push_back(
+                    {{to_world(q, surface_point(q, p0, z0)), to_world(q, surface_point(q, p1, z0)),
+                      to_world(q, surface_point(q, p1, z1)), to_world(q, surface_point(q, p0, z1))},
+                     {Role::Subject, 1.0f},
+                     0.18f,
+                     true,
+                     true});
             }
         }
     }
     if (s.phase != Phase::ToModel && s.prepared.transformed) {
         const glm::dmat4& m = q.world_from_model;
-        scene.frames3.push_back(
-            {dvec3(m[3]), dvec3(m[0]), dvec3(m[1]), dvec3(m[2]), L, "M", 0.8f});
+        scene.frames3.push_back({dvec3(m[3]), dvec3(m[0]), dvec3(m[1]), dvec3(m[2]), L, "M", 0.8f});
     }
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, L, "", 0.5f});
 
@@ -695,7 +752,8 @@ void RayQuadric::draw(const State& s, Scene& scene) {
             if (s.verdict[i] == Verdict::Behind || s.verdict[i] == Verdict::OutsideSlab)
                 role = Role::Discarded;
             if (t < 0)  // the line behind the eye, dashed, to reach a root there
-                scene.segments3.push_back({E, E + t * d, "", {Role::Construction, 1.0f, true}, false});
+                scene.segments3.push_back(
+                    {E, E + t * d, "", {Role::Construction, 1.0f, true}, false});
             scene.points3.push_back(
                 {E + t * d, root_name(s.roots, i) + " = " + num(t, 4), {role}, 6.0f});
         }
@@ -703,8 +761,8 @@ void RayQuadric::draw(const State& s, Scene& scene) {
     if (s.last >= Phase::HitPoint && s.hit.hit)
         scene.labels3.push_back({s.hit.point, "P = " + num(s.hit.point, 4), {Role::Kept}});
     if (s.last == Phase::Normal && s.hit.has_normal)
-        scene.segments3.push_back({s.hit.point, s.hit.point + 0.6 * L * s.hit.normal, "n",
-                                   {Role::Kept, 2.5f}, true});
+        scene.segments3.push_back(
+            {s.hit.point, s.hit.point + 0.6 * L * s.hit.normal, "n", {Role::Kept, 2.5f}, true});
     scene.extent3 = std::max(3 * L, glm::length(E) * 1.1);
 
     // 2D: f(t) over a range holding the eye (t = 0), the roots and the vertex.
@@ -736,8 +794,11 @@ void RayQuadric::draw(const State& s, Scene& scene) {
     const double scale = f_max > 0 && std::isfinite(f_max) ? 0.6 * (hi - lo) / f_max : 1.0;
     for (dvec2& p : curve) p.y *= scale;
     scene.segments.push_back({{lo, 0}, {hi, 0}, "t", {Role::Neutral, 1.0f}, true});
-    scene.segments.push_back(
-        {{0, -0.65 * (hi - lo)}, {0, 0.65 * (hi - lo)}, "", {Role::Construction, 1.0f, true}, false});
+    scene.segments.push_back({{0, -0.65 * (hi - lo)},
+                              {0, 0.65 * (hi - lo)},
+                              "",
+                              {Role::Construction, 1.0f, true},
+                              false});
     scene.polygons.push_back({curve, {Role::Subject, 2.0f}, false, false});
     scene.labels.push_back({{lo, 0.65 * (hi - lo)},
                             "f(t) = " + num(f.a, 4) + "t² + " + operand(f.b) + "t + " +

@@ -12,10 +12,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
@@ -51,8 +50,8 @@ struct RayQuadric {
         Phase phase = Phase::ToModel;  // the step to take next
         Phase last = Phase::ToModel;   // the step taken last (what narrate tells)
         PreparedQuadric prepared;
-        RayQuadratic quad;       // model-space ray and a, b, c
-        QuadraticRoots roots;    // the case, Δ and the roots
+        RayQuadratic quad;     // model-space ray and a, b, c
+        QuadraticRoots roots;  // the case, Δ and the roots
         std::array<Verdict, 2> verdict{Verdict::Pending, Verdict::Pending};
         glm::dvec3 model_point{0.0};  // the hit in model space
         QuadricHit hit;               // filled as the steps go
@@ -75,7 +74,7 @@ struct RayQuadric {
     // The plain function, for the benchmark and for tracers.
     static Result solve(const Input& in) { return intersect(in.quadric, in.origin, in.direction); }
 
-private:
+  private:
     static void advance(State& s);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
 };

@@ -25,9 +25,13 @@ const T& pick(Rng& rng, const std::array<T, N>& values) {
     return values[static_cast<std::size_t>(rng.integer(0, static_cast<long long>(N) - 1))];
 }
 
-double sign(Rng& rng) { return rng.chance(0.5) ? 1.0 : -1.0; }
+double sign(Rng& rng) {
+    return rng.chance(0.5) ? 1.0 : -1.0;
+}
 
-dvec3 signs(Rng& rng, dvec3 v) { return {sign(rng) * v.x, sign(rng) * v.y, sign(rng) * v.z}; }
+dvec3 signs(Rng& rng, dvec3 v) {
+    return {sign(rng) * v.x, sign(rng) * v.y, sign(rng) * v.z};
+}
 
 // A surface and a point on it, in model space.
 dvec3 surface_and_point(Rng& rng, Quadric& q) {
@@ -36,13 +40,13 @@ dvec3 surface_and_point(Rng& rng, Quadric& q) {
         case QuadricKind::Sphere: {
             // (point, r) with |point| = r.
             static const std::array<std::array<double, 4>, 8> quads{{{0, 0, 1, 1},
-                                                                       {1, 2, 2, 3},
-                                                                       {0, 3, 4, 5},
-                                                                       {2, 3, 6, 7},
-                                                                       {1, 4, 8, 9},
-                                                                       {4, 4, 7, 9},
-                                                                       {0, 0, 2, 2},
-                                                                       {2, 0, 0, 2}}};
+                                                                     {1, 2, 2, 3},
+                                                                     {0, 3, 4, 5},
+                                                                     {2, 3, 6, 7},
+                                                                     {1, 4, 8, 9},
+                                                                     {4, 4, 7, 9},
+                                                                     {0, 0, 2, 2},
+                                                                     {2, 0, 0, 2}}};
             const auto& e = pick(rng, quads);
             q.r = e[3];
             dvec3 p{e[0], e[1], e[2]};
@@ -85,7 +89,8 @@ dvec3 surface_and_point(Rng& rng, Quadric& q) {
             return {q.p * u.x, q.q * u.y, q.r * u.z};
         }
         case QuadricKind::Cylinder: {
-            static const std::array<dvec3, 4> pts{{{1, 0, 0}, {0, 1, 0}, {0.6, 0.8, 0}, {0.8, 0.6, 0}}};
+            static const std::array<dvec3, 4> pts{
+                {{1, 0, 0}, {0, 1, 0}, {0.6, 0.8, 0}, {0.8, 0.6, 0}}};
             q.p = pick(rng, small);
             q.q = rng.chance(0.5) ? q.p : pick(rng, small);
             const dvec3 u = signs(rng, pick(rng, pts));
@@ -95,7 +100,9 @@ dvec3 surface_and_point(Rng& rng, Quadric& q) {
     return {0, 0, 0};
 }
 
-bool nice(double t) { return std::fabs(t * 8 - std::round(t * 8)) < 1e-9 && std::fabs(t) < 100; }
+bool nice(double t) {
+    return std::fabs(t * 8 - std::round(t * 8)) < 1e-9 && std::fabs(t) < 100;
+}
 
 std::string matrix_text(const glm::dmat4& m) {
     std::string t = "[";
@@ -121,10 +128,10 @@ RayQuadric::Input RayQuadric::exam_input(Rng& rng) {
                                                    {-1, -1, -1},
                                                    {1, 2, 2},
                                                    {2, 1, -2}}};
-    static const std::array<QuadricKind, 8> kinds{
-        QuadricKind::Sphere,      QuadricKind::Ellipsoid, QuadricKind::Paraboloid,
-        QuadricKind::Paraboloid,  QuadricKind::Hyperboloid, QuadricKind::Cone,
-        QuadricKind::Cylinder,    QuadricKind::Sphere};
+    static const std::array<QuadricKind, 8> kinds{QuadricKind::Sphere,      QuadricKind::Ellipsoid,
+                                                  QuadricKind::Paraboloid,  QuadricKind::Paraboloid,
+                                                  QuadricKind::Hyperboloid, QuadricKind::Cone,
+                                                  QuadricKind::Cylinder,    QuadricKind::Sphere};
     for (int attempt = 0; attempt < 200; ++attempt) {
         Input in;
         Quadric& q = in.quadric;
@@ -174,6 +181,8 @@ std::string RayQuadric::question(const Input& in) {
     return s;
 }
 
-std::vector<std::string> RayQuadric::answer_fields() { return {"hit", "t", "point", "normal"}; }
+std::vector<std::string> RayQuadric::answer_fields() {
+    return {"hit", "t", "point", "normal"};
+}
 
 }  // namespace cg

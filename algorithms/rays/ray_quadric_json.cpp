@@ -22,7 +22,8 @@ QuadricKind kind_from(const Reader& r) {
         if (t == quadric_kind_id(k)) return k;
     throw InputError(r.field("type"),
                      "must be one of sphere, ellipsoid, paraboloid, hyperboloid, cone, cylinder "
-                     "(got \"" + t + "\")");
+                     "(got \"" +
+                         t + "\")");
 }
 
 glm::dmat4 matrix4(const Reader& r, const char* key) {
@@ -75,19 +76,23 @@ Quadric quadric_from(const Reader& r) {
 
 json params_json(const Quadric& q) {
     switch (q.kind) {
-        case QuadricKind::Sphere: return json{{"r", nice_number(q.r)}};
+        case QuadricKind::Sphere:
+            return json{{"r", nice_number(q.r)}};
         case QuadricKind::Ellipsoid:
         case QuadricKind::Hyperboloid:
             return json{{"a", nice_number(q.a)}, {"b", nice_number(q.b)}, {"c", nice_number(q.c)}};
         case QuadricKind::Paraboloid:
-        case QuadricKind::Cylinder: return json{{"p", nice_number(q.p)}, {"q", nice_number(q.q)}};
+        case QuadricKind::Cylinder:
+            return json{{"p", nice_number(q.p)}, {"q", nice_number(q.q)}};
         case QuadricKind::Cone:
             return json{{"p", nice_number(q.p)}, {"q", nice_number(q.q)}, {"r", nice_number(q.r)}};
     }
     return json::object();
 }
 
-json point_or_null(bool has, glm::dvec3 p) { return has ? to_json(p) : json(nullptr); }
+json point_or_null(bool has, glm::dvec3 p) {
+    return has ? to_json(p) : json(nullptr);
+}
 
 json quadric_json(const Quadric& q) {
     json j{{"type", quadric_kind_id(q.kind)}, {"params", params_json(q)}};
@@ -144,6 +149,8 @@ struct JsonIo<RayQuadric> {
     }
 };
 
-Algorithm ray_quadric_algorithm() { return make_algorithm<RayQuadric>(); }
+Algorithm ray_quadric_algorithm() {
+    return make_algorithm<RayQuadric>();
+}
 
 }  // namespace cg

@@ -6,7 +6,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench/bench_support.hpp"
-
 #include "core/rng.hpp"
 #include "io/registry.hpp"
 #include "rays/phong_lighting.hpp"

@@ -12,8 +12,12 @@ namespace cg::test {
 
 using L3 = std::array<long double, 3>;
 
-inline L3 l3(glm::dvec3 v) { return {v.x, v.y, v.z}; }
-inline long double ldot(const L3& a, const L3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline L3 l3(glm::dvec3 v) {
+    return {v.x, v.y, v.z};
+}
+inline long double ldot(const L3& a, const L3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 inline L3 lnorm(const L3& a) {
     const long double n = std::sqrt(ldot(a, a));
     if (n == 0) return {0, 0, 0};
@@ -46,8 +50,8 @@ inline LongShade reference_shade(const PhongLighting::Input& in) {
             const L3 to{L.position.x - P[0], L.position.y - P[1], L.position.z - P[2]};
             const long double r = std::sqrt(ldot(to, to));
             t.l = lnorm(to);
-            t.attenuation = 1 / ((long double)L.attenuation.x + L.attenuation.y * r +
-                                 L.attenuation.z * r * r);
+            t.attenuation =
+                1 / ((long double)L.attenuation.x + L.attenuation.y * r + L.attenuation.z * r * r);
         }
         t.n_dot_l = ldot(t.l, n);
         for (int c = 0; c < 3; ++c) t.r[c] = -t.l[c] + 2 * t.n_dot_l * n[c];
@@ -66,7 +70,8 @@ inline LongShade reference_shade(const PhongLighting::Input& in) {
         }
         out.lights.push_back(t);
     }
-    for (int c = 0; c < 3; ++c) out.intensity[c] = out.ambient[c] + out.diffuse[c] + out.specular[c];
+    for (int c = 0; c < 3; ++c)
+        out.intensity[c] = out.ambient[c] + out.diffuse[c] + out.specular[c];
     return out;
 }
 

@@ -7,10 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "rays/quadric.hpp"
 

@@ -3,9 +3,6 @@
 // inputs against the independent long-double evaluation of phong_reference.hpp; the state
 // machine against the plain function; errors; exam problems; determinism and the picture.
 #include <catch2/catch.hpp>
-
-#include "support/replay.hpp"
-
 #include <cmath>
 #include <limits>
 #include <set>
@@ -14,6 +11,7 @@
 #include "io/registry.hpp"
 #include "rays/phong_lighting.hpp"
 #include "rays/phong_reference.hpp"
+#include "support/replay.hpp"
 
 using cg::PhongLighting;
 using glm::dvec3;
@@ -55,11 +53,15 @@ std::string error_of(const std::string& text) {
 }
 
 // The example with changes applied.
-cg::json base() { return registry().find("phong-lighting")->example(); }
+cg::json base() {
+    return registry().find("phong-lighting")->example();
+}
 
 using Events = std::vector<std::string>;
 
-double num(const cg::json& j) { return j.get<double>(); }
+double num(const cg::json& j) {
+    return j.get<double>();
+}
 
 }  // namespace
 
@@ -70,8 +72,8 @@ TEST_CASE("phong-lighting: a 3-4-5 light worked by hand, both models", "[rays][p
     // Phong: r = −l + 1.6 n = (−0.6, 0, 0.8), r·v = 0.8, 0.8^20.
     cg::json in = base();
     const Traced blinn = run_json(in);
-    CHECK(blinn.events == Events{"view", "ambient", "point-light", "diffuse", "blinn-specular",
-                                 "total"});
+    CHECK(blinn.events ==
+          Events{"view", "ambient", "point-light", "diffuse", "blinn-specular", "total"});
     const cg::json& r = blinn.result;
     CHECK(num(r["ambient"]) == Approx(0.1).epsilon(1e-15));
     CHECK(num(r["diffuse"]) == Approx(0.48).epsilon(1e-15));
@@ -118,8 +120,8 @@ TEST_CASE("phong-lighting: hand cases", "[rays][phong-lighting]") {
         in["eye"] = {0, 0, -4};  // the eye below too, so that r·v = 0.8 > 0
         in["lights"][0]["position"] = {3, 0, -4};
         const Traced t = run_json(in);
-        CHECK(t.events == Events{"view", "ambient", "point-light", "light-behind", "no-specular",
-                                 "total"});
+        CHECK(t.events ==
+              Events{"view", "ambient", "point-light", "light-behind", "no-specular", "total"});
         CHECK(num(t.result["lights"][0]["n_dot_l"]) == Approx(-0.8));
         CHECK(num(t.result["diffuse"]) == 0);
         CHECK(num(t.result["specular"]) == 0);
@@ -194,7 +196,8 @@ TEST_CASE("phong-lighting: 5,000 random inputs agree with a long-double evaluati
                 L.direction = rv(-1, 1);
             } else {
                 L.position = in.point + rv(-10, 10);
-                if (rng.chance(0.5)) L.attenuation = {rng.uniform(0, 1), rng.uniform(0, 0.5), rng.uniform(0, 0.1)};
+                if (rng.chance(0.5))
+                    L.attenuation = {rng.uniform(0, 1), rng.uniform(0, 0.5), rng.uniform(0, 0.1)};
                 if (L.attenuation == dvec3(0.0)) L.attenuation.x = 1;
             }
             in.lights.push_back(L);
@@ -213,7 +216,7 @@ TEST_CASE("phong-lighting: 5,000 random inputs agree with a long-double evaluati
         }
         REQUIRE(got.lights.size() == want.lights.size());
         for (std::size_t i = 0; i < got.lights.size(); ++i) {
-            const auto &g = got.lights[i];
+            const auto& g = got.lights[i];
             const auto& w = want.lights[i];
             CHECK(close(g.n_dot_l, w.n_dot_l));
             CHECK(close(g.r_dot_v, w.r_dot_v));
@@ -251,32 +254,46 @@ TEST_CASE("phong-lighting: bad input is refused with the field named",
         return error_of(in.dump());
     };
     CHECK(with([](cg::json&) {}) == "(accepted)");
-    CHECK(with([](cg::json& j) { j["normal"] = {0, 0, 0}; }) ==
-          "normal: must not be the zero vector: the surface needs a normal");
-    CHECK_THAT(with([](cg::json& j) { j["eye"] = {0, 0, 0}; }),
+    CHECK(with([](cg::json& j) {
+              j["normal"] = {0, 0, 0};
+          }) == "normal: must not be the zero vector: the surface needs a normal");
+    CHECK_THAT(with([](cg::json& j) {
+                   j["eye"] = {0, 0, 0};
+               }),
                Catch::StartsWith("eye: must differ from point"));
     CHECK_THAT(with([](cg::json& j) { j["material"]["shininess"] = -1; }),
                Catch::StartsWith("material.shininess: must not be negative (got -1)"));
     CHECK(with([](cg::json& j) { j["material"]["kd"] = -0.5; }) ==
           "material.kd: must not be negative: a reflection coefficient (got -0.5)");
-    CHECK(with([](cg::json& j) { j["material"]["ks"] = {0.1, -0.5, 0}; }) ==
-          "material.ks[1]: must not be negative: a reflection coefficient (got -0.5)");
-    CHECK_THAT(with([](cg::json& j) { j["material"]["ka"] = {0.1, 0.5}; }),
+    CHECK(with([](cg::json& j) {
+              j["material"]["ks"] = {0.1, -0.5, 0};
+          }) == "material.ks[1]: must not be negative: a reflection coefficient (got -0.5)");
+    CHECK_THAT(with([](cg::json& j) {
+                   j["material"]["ka"] = {0.1, 0.5};
+               }),
                Catch::StartsWith("material.ka: must be a number or a colour [r, g, b]"));
-    CHECK_THAT(with([](cg::json& j) { j["lights"][0]["position"] = {0, 0, 0}; }),
+    CHECK_THAT(with([](cg::json& j) {
+                   j["lights"][0]["position"] = {0, 0, 0};
+               }),
                Catch::StartsWith("lights[0].position: must differ from point"));
-    CHECK_THAT(with([](cg::json& j) { j["lights"][0]["attenuation"] = {0, 0, 0}; }),
+    CHECK_THAT(with([](cg::json& j) {
+                   j["lights"][0]["attenuation"] = {0, 0, 0};
+               }),
                Catch::StartsWith("lights[0].attenuation: must not be all zero"));
-    CHECK(with([](cg::json& j) { j["lights"][0]["attenuation"] = {1, -1, 0}; }) ==
-          "lights[0].attenuation[1]: must not be negative (got -1)");
+    CHECK(with([](cg::json& j) {
+              j["lights"][0]["attenuation"] = {1, -1, 0};
+          }) == "lights[0].attenuation[1]: must not be negative (got -1)");
     CHECK_THAT(with([](cg::json& j) {
                    j["lights"][0] = cg::json::parse(
                        R"({"direction": [0, 0, -1], "intensity": 1, "attenuation": [1, 1, 0]})");
                }),
                Catch::StartsWith("lights[0].attenuation: is only for point lights"));
-    CHECK(with([](cg::json& j) { j["lights"][0] = {{"direction", {0, 0, 0}}, {"intensity", 1}}; }) ==
-          "lights[0].direction: must not be the zero vector");
-    CHECK_THAT(with([](cg::json& j) { j["lights"][0]["direction"] = {0, 0, -1}; }),
+    CHECK(with([](cg::json& j) {
+              j["lights"][0] = {{"direction", {0, 0, 0}}, {"intensity", 1}};
+          }) == "lights[0].direction: must not be the zero vector");
+    CHECK_THAT(with([](cg::json& j) {
+                   j["lights"][0]["direction"] = {0, 0, -1};
+               }),
                Catch::StartsWith("lights[0]: needs exactly one of \"position\""));
     CHECK_THAT(with([](cg::json& j) { j["lights"][0].erase("position"); }),
                Catch::StartsWith("lights[0]: needs exactly one of \"position\""));
@@ -302,7 +319,8 @@ TEST_CASE("phong-lighting: bad input is refused with the field named",
     };
     CHECK(err([](auto&) {}) == "(accepted)");
     CHECK(err([&](auto& i) { i.point.x = nan; }) == "point[0]: must be a finite number (got NaN)");
-    CHECK(err([&](auto& i) { i.normal.z = nan; }) == "normal[2]: must be a finite number (got NaN)");
+    CHECK(err([&](auto& i) { i.normal.z = nan; }) ==
+          "normal[2]: must be a finite number (got NaN)");
     CHECK(err([&](auto& i) { i.material.shininess = nan; }) ==
           "material.shininess: must be a finite number (got NaN)");
     CHECK(err([&](auto& i) { i.ambient = dvec3(nan); }) ==
@@ -348,7 +366,8 @@ TEST_CASE("phong-lighting: traces are deterministic and the picture shows the ve
           "[rays][phong-lighting]") {
     const cg::Algorithm& a = *registry().find("phong-lighting");
     cg::json in = base();
-    in["lights"].push_back(cg::json::parse(R"({"direction": [1, 0, -1], "intensity": [1, 0.5, 0.2]})"));
+    in["lights"].push_back(
+        cg::json::parse(R"({"direction": [1, 0, -1], "intensity": [1, 0.5, 0.2]})"));
     cg::test::check_replay(a, in, cg::test::kEveryStep);
 
     auto run = a.create(base());

@@ -5,19 +5,16 @@
 // independent long-double solver of quadric_reference.hpp; the state machine against the plain
 // function; errors; exam problems; determinism and the picture.
 #include <catch2/catch.hpp>
-
-#include "support/replay.hpp"
-
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <set>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "io/exam.hpp"
 #include "io/registry.hpp"
 #include "rays/quadric_reference.hpp"
 #include "rays/ray_quadric.hpp"
+#include "support/replay.hpp"
 
 using cg::Quadric;
 using cg::QuadricKind;
@@ -259,9 +256,8 @@ TEST_CASE("ray-quadric: 10,000 random rays per quadric agree with a long-double 
             q.c = rng.uniform(0.3, 3), q.p = rng.uniform(0.3, 3), q.q = rng.uniform(0.3, 3);
             const double L = 3;
             if (rng.chance(0.5)) {  // rotation · shear · non-uniform scale, then a translation
-                glm::dmat4 m = glm::translate(glm::dmat4(1.0), {rng.uniform(-3, 3),
-                                                                  rng.uniform(-3, 3),
-                                                                  rng.uniform(-3, 3)});
+                glm::dmat4 m = glm::translate(
+                    glm::dmat4(1.0), {rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-3, 3)});
                 m = glm::rotate(m, rng.uniform(0, 6.283),
                                 glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1),
                                                      rng.uniform(0.1, 1))));
@@ -269,8 +265,8 @@ TEST_CASE("ray-quadric: 10,000 random rays per quadric agree with a long-double 
                 shear[1][0] = rng.uniform(-1, 1), shear[2][0] = rng.uniform(-1, 1),
                 shear[2][1] = rng.uniform(-1, 1);
                 m = m * shear *
-                    glm::scale(glm::dmat4(1.0), {rng.uniform(0.3, 3), rng.uniform(0.3, 3),
-                                                 rng.uniform(0.3, 3)});
+                    glm::scale(glm::dmat4(1.0),
+                               {rng.uniform(0.3, 3), rng.uniform(0.3, 3), rng.uniform(0.3, 3)});
                 q.world_from_model = m;
             }
             if (rng.chance(0.25)) {
@@ -294,17 +290,18 @@ TEST_CASE("ray-quadric: 10,000 random rays per quadric agree with a long-double 
             REQUIRE(h.root_count == ref.count);
             for (int i = 0; i < ref.count; ++i) {
                 const long double want = ref.roots[i];
-                CHECK(std::fabs(h.roots[i] - want) <= 1e-9L * std::max<long double>(1, std::fabs(want)));
+                CHECK(std::fabs(h.roots[i] - want) <=
+                      1e-9L * std::max<long double>(1, std::fabs(want)));
             }
             // The chosen root: skip the rare rays whose hit sits within round-off of ε or of
             // a slab face, where either answer is right.
             bool borderline = false;
             for (int i = 0; i < ref.count; ++i) {
                 const long double t = ref.roots[i];
-                const dvec3 pm = cg::prepare(q).linear_inv *
-                                 (o + double(t) * d - dvec3(q.world_from_model[3]));
-                borderline = borderline || std::fabs(t) < 1e-7 ||
-                             std::fabs(pm.z - q.zmin) < 1e-7 || std::fabs(pm.z - q.zmax) < 1e-7;
+                const dvec3 pm =
+                    cg::prepare(q).linear_inv * (o + double(t) * d - dvec3(q.world_from_model[3]));
+                borderline = borderline || std::fabs(t) < 1e-7 || std::fabs(pm.z - q.zmin) < 1e-7 ||
+                             std::fabs(pm.z - q.zmax) < 1e-7;
             }
             if (borderline) {
                 ++near_degenerate;
@@ -315,7 +312,8 @@ TEST_CASE("ray-quadric: 10,000 random rays per quadric agree with a long-double 
                 ++hits;
                 CHECK(std::fabs(h.t - ref.t) <= 1e-9L * std::max<long double>(1, std::fabs(ref.t)));
                 const long double size = glm::length(o) + std::fabs(h.t) * glm::length(d) + 1;
-                for (int k = 0; k < 3; ++k) CHECK(std::fabs(h.point[k] - ref.point[k]) <= 1e-9L * size);
+                for (int k = 0; k < 3; ++k)
+                    CHECK(std::fabs(h.point[k] - ref.point[k]) <= 1e-9L * size);
                 CHECK(cg::test::relative_residual(q, h.point) < 1e-9L);
                 REQUIRE(h.has_normal);
                 long double err = 0;
@@ -341,7 +339,7 @@ TEST_CASE("ray-quadric: 10,000 random rays per quadric agree with a long-double 
         }
     }
     CAPTURE(near_degenerate, total, hits);
-    CHECK(hits > total / 4);                 // the rays do hit, mostly
+    CHECK(hits > total / 4);                // the rays do hit, mostly
     CHECK(near_degenerate < total / 1000);  // and the skipped ones are rare
     CHECK(machine_checked == 3000);
 }
@@ -350,26 +348,39 @@ TEST_CASE("ray-quadric: bad input is refused with the field named", "[rays][ray-
     const std::string sphere = R"("quadric": {"type": "sphere", "params": {"r": 1}})";
     CHECK(error_of("{" + sphere + R"(, "origin": [0, 0, 5], "direction": [0, 0, 0]})") ==
           "direction: must not be the zero vector: a ray needs a direction");
-    CHECK(error_of(
-              R"({"quadric": {"type": "sphere", "params": {"r": 1}, "transform": [[1, 0, 0, 0], [0, 1, 0, 0], [1, 1, 0, 0], [0, 0, 0, 1]]}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
-          "quadric.transform: is singular (determinant 0): it flattens space, so rays cannot be "
-          "carried into model space");
+    CHECK(
+        error_of(
+            R"({"quadric": {"type": "sphere", "params": {"r": 1}, "transform": [[1, 0, 0, 0], [0, 1, 0, 0], [1, 1, 0, 0], [0, 0, 0, 1]]}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
+        "quadric.transform: is singular (determinant 0): it flattens space, so rays cannot be "
+        "carried into model space");
     CHECK_THAT(
         error_of(
             R"({"quadric": {"type": "sphere", "params": {"r": 1}, "transform": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]}, "origin": [0, 0, 5], "direction": [0, 0, -1]})"),
         Catch::StartsWith("quadric.transform[3]: must be [0, 0, 0, 1]"));
-    CHECK(error_of(R"({"quadric": {"type": "sphere", "params": {"r": -1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
-          "quadric.params.r: must be positive: it is a semi-axis length (got -1)");
-    CHECK(error_of(R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 0, "r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
-          "quadric.params.q: must be positive: it is a semi-axis length (got 0)");
-    CHECK_THAT(error_of(R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})"),
-               Catch::StartsWith("quadric.params.r: is missing"));
-    CHECK_THAT(error_of(R"({"quadric": {"type": "sphere", "params": {"r": 1, "a": 2}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})"),
-               Catch::StartsWith("quadric.params.a: is not a known field"));
-    CHECK_THAT(error_of(R"({"quadric": {"type": "torus", "params": {"r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})"),
-               Catch::StartsWith("quadric.type: must be one of sphere, ellipsoid"));
-    CHECK(error_of(R"({"quadric": {"type": "cylinder", "params": {"p": 1, "q": 1}, "zmin": 2, "zmax": 1}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
-          "quadric.zmax: must be greater than zmin (1 ≤ 2): the slab is empty");
+    CHECK(
+        error_of(
+            R"({"quadric": {"type": "sphere", "params": {"r": -1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
+        "quadric.params.r: must be positive: it is a semi-axis length (got -1)");
+    CHECK(
+        error_of(
+            R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 0, "r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
+        "quadric.params.q: must be positive: it is a semi-axis length (got 0)");
+    CHECK_THAT(
+        error_of(
+            R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})"),
+        Catch::StartsWith("quadric.params.r: is missing"));
+    CHECK_THAT(
+        error_of(
+            R"({"quadric": {"type": "sphere", "params": {"r": 1, "a": 2}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})"),
+        Catch::StartsWith("quadric.params.a: is not a known field"));
+    CHECK_THAT(
+        error_of(
+            R"({"quadric": {"type": "torus", "params": {"r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})"),
+        Catch::StartsWith("quadric.type: must be one of sphere, ellipsoid"));
+    CHECK(
+        error_of(
+            R"({"quadric": {"type": "cylinder", "params": {"p": 1, "q": 1}, "zmin": 2, "zmax": 1}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
+        "quadric.zmax: must be greater than zmin (1 ≤ 2): the slab is empty");
     CHECK_THAT(error_of("{" + sphere + R"(, "origin": [0, 0], "direction": [0, 0, -1]})"),
                Catch::StartsWith("origin: must be a point [x, y, z]"));
     CHECK_THAT(error_of("{" + sphere + R"(, "origin": [0, 0, 1e999], "direction": [0, 0, -1]})"),
@@ -395,7 +406,8 @@ TEST_CASE("ray-quadric: bad input is refused with the field named", "[rays][ray-
         return std::string("(accepted)");
     };
     CHECK(with([](auto&) {}) == "(accepted)");
-    CHECK(with([&](auto& i) { i.origin.y = nan; }) == "origin[1]: must be a finite number (got NaN)");
+    CHECK(with([&](auto& i) { i.origin.y = nan; }) ==
+          "origin[1]: must be a finite number (got NaN)");
     CHECK(with([&](auto& i) { i.direction.z = nan; }) ==
           "direction[2]: must be a finite number (got NaN)");
     CHECK(with([&](auto& i) { i.quadric.r = nan; }) ==
@@ -446,7 +458,8 @@ TEST_CASE("ray-quadric: exam problems are nice and answered right", "[rays][ray-
         if (ref.hit) {
             ++hits;
             CHECK(e["t"].get<double>() == Approx(double(ref.t)));
-            for (int k = 0; k < 3; ++k) CHECK(e["point"][k].get<double>() == Approx(double(ref.point[k])).margin(1e-12));
+            for (int k = 0; k < 3; ++k)
+                CHECK(e["point"][k].get<double>() == Approx(double(ref.point[k])).margin(1e-12));
         } else {
             CHECK(e["t"].is_null());
         }
@@ -463,7 +476,8 @@ TEST_CASE("ray-quadric: exam problems are nice and answered right", "[rays][ray-
     CHECK(hits > 250);
     CHECK(tangents > 0);
     CHECK(transformed > 40);
-    for (const char* ev : {"linear", "two-roots", "tangent", "miss", "apex", "to-model", "normal"}) {
+    for (const char* ev :
+         {"linear", "two-roots", "tangent", "miss", "apex", "to-model", "normal"}) {
         CAPTURE(ev);
         CHECK(events.count(ev) == 1);
     }
