@@ -1,0 +1,578 @@
+// Sections: [helpers] [spec] [validate] [the model's terms] [advance] [narrate] [draw]
+#include "rays/phong_lighting.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "core/format.hpp"
+#include "rays/quadric.hpp"  // unit()
+
+namespace cg {
+
+namespace {
+
+using glm::dvec2;
+using glm::dvec3;
+using Color = PhongLighting::Color;
+using Phase = PhongLighting::Phase;
+using Model = PhongLighting::Model;
+
+// ---- [helpers] ------------------------------------------------------------------------------
+
+enum Line {
+    kLineView = 1,
+    kLineAmbient,
+    kLineLight,
+    kLineDiffuse,
+    kLineSpecular,
+    kLineBlinn,
+    kLineTotal,
+};
+
+double dot(dvec3 a, dvec3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+dvec3 unit_of(dvec3 v) {
+    return unit(v);
+}
+
+void check_finite3(dvec3 v, const std::string& field) {
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(v[i]))
+            throw InputError(field + "[" + std::to_string(i) + "]",
+                             "must be a finite number (got " + num(v[i]) + ")");
+}
+
+// A colour or coefficient: finite and ≥ 0 on every channel. A scalar names no channel.
+void check_color(const Color& c, bool rgb, const std::string& field, const char* what) {
+    for (int i = 0; i < 3; ++i) {
+        const std::string f = rgb ? field + "[" + std::to_string(i) + "]" : field;
+        if (!std::isfinite(c[i]))
+            throw InputError(f, "must be a finite number (got " + num(c[i]) + ")");
+        if (c[i] < 0)
+            throw InputError(
+                f, std::string("must not be negative: ") + what + " (got " + num(c[i]) + ")");
+        if (c[i] > 1e100) throw InputError(f, "is too large (got " + num(c[i]) + ")");
+    }
+}
+
+// "0.5" for a scalar (all channels equal and the input had no colours), "(0.5, 0.2, 0)".
+std::string ctext(const Color& c, bool rgb, int digits = 6) {
+    return rgb ? num(c, digits) : num(c.x, digits);
+}
+std::string ctex(const Color& c, bool rgb) {
+    return rgb ? tex(c) : tex(c.x);
+}
+
+}  // namespace
+
+// ---- [spec] ---------------------------------------------------------------------------------
+
+const Spec& PhongLighting::spec() {
+    static const Spec spec{
+        "phong-lighting",
+        "Phong and Blinn-Phong lighting at a point",
+        "Lighting",
+        {
+            "n ← n/|n|;  v ← (E − P)/|E − P|",
+            "I ← k_a I_a                                   ▷ ambient",
+            "for each light i:  l ← (L − P)/|L − P| or −dir;  att ← 1/(c1 + c2 r + c3 r²) or 1",
+            "    I += att I_i k_d max(l·n, 0)               ▷ Lambert",
+            "    Phong:  if l·n > 0:  I += att I_i k_s max(r·v, 0)^p,  r ← −l + 2(l·n)n",
+            "    Blinn:  if l·n > 0:  I += att I_i k_s max(h·n, 0)^p,  h ← (v + l)/|v + l|",
+            "return I = ambient + Σ diffuse + Σ specular",
+        },
+        {
+            {"view", "the unit normal n and the unit vector v toward the eye"},
+            {"ambient", "the ambient term k_a I_a, the same everywhere"},
+            {"point-light", "a point light: l toward it, its distance and attenuation"},
+            {"directional-light", "a directional light: l against its direction, no attenuation"},
+            {"diffuse", "Lambert's term k_d (l·n), scaled by the light's intensity"},
+            {"light-behind", "l·n ≤ 0: the light is behind the surface and adds nothing"},
+            {"phong-specular", "Phong's highlight k_s (r·v)^p with r the mirrored light"},
+            {"blinn-specular", "Blinn-Phong's highlight k_s (h·n)^p with h the halfway vector"},
+            {"no-specular", "the light is behind the surface: no highlight"},
+            {"total", "the three terms summed"},
+        },
+    };
+    return spec;
+}
+
+// ---- [validate] -----------------------------------------------------------------------------
+
+void PhongLighting::validate(const Input& in) {
+    check_finite3(in.point, "point");
+    check_finite3(in.normal, "normal");
+    check_finite3(in.eye, "eye");
+    if (in.normal == dvec3(0.0))
+        throw InputError("normal", "must not be the zero vector: the surface needs a normal");
+    if (in.eye == in.point)
+        throw InputError("eye",
+                         "must differ from point: the view direction v = (E − P)/|E − P| "
+                         "is undefined when the eye is at the point");
+    if (!std::isfinite(glm::length(in.eye - in.point)) ||
+        !std::isfinite(glm::length(in.normal) + 1))
+        throw InputError("eye", "is too far from the point for double precision");
+    check_color(in.ambient, in.rgb, "ambient", "an intensity");
+    check_color(in.material.ka, in.rgb, "material.ka", "a reflection coefficient");
+    check_color(in.material.kd, in.rgb, "material.kd", "a reflection coefficient");
+    check_color(in.material.ks, in.rgb, "material.ks", "a reflection coefficient");
+    const double p = in.material.shininess;
+    if (!std::isfinite(p))
+        throw InputError("material.shininess", "must be a finite number (got " + num(p) + ")");
+    if (p < 0)
+        throw InputError("material.shininess",
+                         "must not be negative (got " + num(p) +
+                             "): (r·v)^p with p < 0 would make the highlight brightest away from "
+                             "the mirror direction and infinite at r·v = 0");
+    if (p > 1e6) throw InputError("material.shininess", "is too large (got " + num(p) + ")");
+    for (std::size_t i = 0; i < in.lights.size(); ++i) {
+        const Light& L = in.lights[i];
+        const std::string f = "lights[" + std::to_string(i) + "]";
+        check_color(L.intensity, in.rgb, f + ".intensity", "an intensity");
+        if (L.directional) {
+            check_finite3(L.direction, f + ".direction");
+            if (L.direction == dvec3(0.0))
+                throw InputError(f + ".direction", "must not be the zero vector");
+            if (L.attenuation != dvec3(1, 0, 0))
+                throw InputError(f + ".attenuation",
+                                 "is only for point lights: a directional light is not "
+                                 "attenuated (its energy does not spread out)");
+            continue;
+        }
+        check_finite3(L.position, f + ".position");
+        if (L.position == in.point)
+            throw InputError(f + ".position",
+                             "must differ from point: the light's direction l "
+                             "is undefined when it sits on the surface point");
+        for (int k = 0; k < 3; ++k) {
+            const std::string af = f + ".attenuation[" + std::to_string(k) + "]";
+            if (!std::isfinite(L.attenuation[k]))
+                throw InputError(af, "must be a finite number (got " + num(L.attenuation[k]) + ")");
+            if (L.attenuation[k] < 0)
+                throw InputError(af, "must not be negative (got " + num(L.attenuation[k]) + ")");
+        }
+        if (L.attenuation == dvec3(0.0))
+            throw InputError(f + ".attenuation",
+                             "must not be all zero: 1/(c1 + c2 r + c3 r²) would divide by 0");
+        const double r = glm::length(L.position - in.point);
+        const double den = L.attenuation.x + L.attenuation.y * r + L.attenuation.z * r * r;
+        if (!std::isfinite(r) || !std::isfinite(den) || !(den > 0) || !std::isfinite(1 / den))
+            throw InputError(f + ".position",
+                             "is too far from or too close to the point for "
+                             "double precision (distance " +
+                                 num(r) + ")");
+    }
+}
+
+PhongLighting::State PhongLighting::start(const Input& in) {
+    validate(in);
+    State s;
+    s.in = in;
+    return s;
+}
+
+// ---- [the model's terms] --------------------------------------------------------------------
+
+namespace {
+
+// l, distance and attenuation of light L at P.
+void light_direction(const PhongLighting::Light& L, dvec3 P, PhongLighting::LightTerms& t) {
+    if (L.directional) {
+        t.l = -unit_of(L.direction);
+        t.distance = 0;
+        t.attenuation = 1;
+    } else {
+        const dvec3 to = L.position - P;
+        t.distance = std::sqrt(dot(to, to));
+        t.l = unit_of(to);
+        const dvec3 c = L.attenuation;
+        t.attenuation = 1 / (c.x + c.y * t.distance + c.z * t.distance * t.distance);
+    }
+}
+
+void diffuse_term(const PhongLighting::Input& in, dvec3 n, PhongLighting::LightTerms& t,
+                  const PhongLighting::Light& L) {
+    t.n_dot_l = dot(n, t.l);
+    t.diffuse = t.attenuation * std::max(t.n_dot_l, 0.0) * (in.material.kd * L.intensity);
+}
+
+// Both reflection vectors are computed (the result reports both); the model picks one.
+void specular_term(const PhongLighting::Input& in, dvec3 n, dvec3 v, PhongLighting::LightTerms& t,
+                   const PhongLighting::Light& L) {
+    t.r = 2 * t.n_dot_l * n - t.l;
+    t.r_dot_v = dot(t.r, v);
+    t.h = unit_of(v + t.l);
+    t.n_dot_h = dot(n, t.h);
+    if (!(t.n_dot_l > 0)) {
+        t.specular = Color(0.0);
+        return;
+    }
+    const double cosine = in.model == Model::Phong ? t.r_dot_v : t.n_dot_h;
+    const double s = std::pow(std::max(cosine, 0.0), in.material.shininess);
+    t.specular = t.attenuation * s * (in.material.ks * L.intensity);
+}
+
+}  // namespace
+
+// ---- [advance] ------------------------------------------------------------------------------
+
+void PhongLighting::advance(State& s) {
+    s.last = s.phase;
+    const int n_lights = static_cast<int>(s.in.lights.size());
+    Result& o = s.out;
+    switch (s.phase) {
+        case Phase::View:  // The unit normal and the view vector
+            o.rgb = s.in.rgb;
+            o.n = unit_of(s.in.normal);
+            o.v = unit_of(s.in.eye - s.in.point);
+            o.lights.reserve(s.in.lights.size());
+            s.phase = Phase::Ambient;
+            return;
+        case Phase::Ambient:  // The ambient term
+            o.ambient = s.in.material.ka * s.in.ambient;
+            s.phase = n_lights > 0 ? Phase::LightDir : Phase::Total;
+            return;
+        case Phase::LightDir:  // The next light: its direction and attenuation
+            ++s.k;
+            o.lights.emplace_back();
+            light_direction(s.in.lights[s.k], s.in.point, o.lights.back());
+            s.phase = Phase::Diffuse;
+            return;
+        case Phase::Diffuse:  // Lambert's term
+            diffuse_term(s.in, o.n, o.lights.back(), s.in.lights[s.k]);
+            o.diffuse += o.lights.back().diffuse;
+            s.phase = Phase::Specular;
+            return;
+        case Phase::Specular:  // The highlight
+            specular_term(s.in, o.n, o.v, o.lights.back(), s.in.lights[s.k]);
+            o.specular += o.lights.back().specular;
+            s.phase = s.k + 1 < n_lights ? Phase::LightDir : Phase::Total;
+            return;
+        case Phase::Total:  // The sum
+            o.intensity = o.ambient + o.diffuse + o.specular;
+            s.phase = Phase::Done;
+            return;
+        case Phase::Done:
+            return;
+    }
+}
+
+void PhongLighting::step(State& s, StepInfo* info) {
+    if (s.phase == Phase::Done) return;
+    advance(s);
+    if (info) narrate(s, *info);
+}
+
+[[gnu::flatten]] PhongLighting::Result PhongLighting::shade(const Input& in) {
+    Result o;
+    o.rgb = in.rgb;
+    o.n = unit_of(in.normal);
+    o.v = unit_of(in.eye - in.point);
+    o.ambient = in.material.ka * in.ambient;
+    o.lights.resize(in.lights.size());
+    for (std::size_t i = 0; i < in.lights.size(); ++i) {
+        LightTerms& t = o.lights[i];
+        light_direction(in.lights[i], in.point, t);
+        diffuse_term(in, o.n, t, in.lights[i]);
+        o.diffuse += t.diffuse;
+        specular_term(in, o.n, o.v, t, in.lights[i]);
+        o.specular += t.specular;
+    }
+    o.intensity = o.ambient + o.diffuse + o.specular;
+    return o;
+}
+
+// ---- [narrate] ------------------------------------------------------------------------------
+
+namespace {
+
+std::string light_name(int k) {
+    return "light " + std::to_string(k);
+}
+
+void narrate_view(const PhongLighting::State& s, StepInfo& info) {
+    const auto& o = s.out;
+    info.event = "view";
+    info.line = kLineView;
+    const double nv = dot(o.n, o.v);
+    info.narration =
+        "n = " + num(s.in.normal) + "/|n| = " + num(o.n) +
+        "; v = (E − P)/|E − P| = " + num(s.in.eye - s.in.point) + "/" +
+        num(glm::length(s.in.eye - s.in.point)) + " = " + num(o.v) +
+        (nv < 0 ? ". n·v = " + num(nv) + " < 0: the eye looks at the back of the surface." : ".");
+    info.math = "n = \\frac{" + tex(s.in.normal) + "}{" + tex(glm::length(s.in.normal)) +
+                "} = " + tex(o.n) + ",\\quad v = \\frac{E - P}{|E - P|} = " + tex(o.v);
+}
+
+void narrate_ambient(const PhongLighting::State& s, StepInfo& info) {
+    const bool rgb = s.in.rgb;
+    info.event = "ambient";
+    info.line = kLineAmbient;
+    info.narration = "Ambient: k_a I_a = " + ctext(s.in.material.ka, rgb) + " · " +
+                     ctext(s.in.ambient, rgb) + " = " + ctext(s.out.ambient, rgb) +
+                     ", a stand-in for light bounced around the scene, the same at every point.";
+    info.math = "k_a I_a = " + ctex(s.in.material.ka, rgb) + " \\cdot " + ctex(s.in.ambient, rgb) +
+                " = " + ctex(s.out.ambient, rgb);
+}
+
+void narrate_light(const PhongLighting::State& s, StepInfo& info) {
+    const PhongLighting::Light& L = s.in.lights[s.k];
+    const PhongLighting::LightTerms& t = s.out.lights.back();
+    info.line = kLineLight;
+    if (L.directional) {
+        info.event = "directional-light";
+        info.narration = light_name(s.k) + " is directional, travelling along " + num(L.direction) +
+                         ": l = −dir/|dir| = " + num(t.l) +
+                         ", no attenuation (its energy does not spread out).";
+        info.math = "l = -\\frac{" + tex(L.direction) + "}{|\\cdot|} = " + tex(t.l) +
+                    ",\\quad \\text{att} = 1";
+        return;
+    }
+    const dvec3 c = L.attenuation;
+    info.event = "point-light";
+    info.narration = light_name(s.k) + " at " + num(L.position) +
+                     ": l = (L − P)/|L − P| = " + num(t.l) + ", distance r = " + num(t.distance) +
+                     ", attenuation 1/(c1 + c2·r + c3·r²) = 1/(" + num(c.x) + " + " + num(c.y) +
+                     "·" + num(t.distance) + " + " + num(c.z) + "·" + num(t.distance) +
+                     "²) = " + num(t.attenuation) + ".";
+    info.math = "l = \\frac{L - P}{|L - P|} = " + tex(t.l) + ",\\quad r = " + tex(t.distance) +
+                ",\\quad \\text{att} = \\frac{1}{" + tex(c.x) + " + " + tex(c.y) + " \\cdot " +
+                tex(t.distance) + " + " + tex(c.z) + " \\cdot " + tex(t.distance) +
+                "^2} = " + tex(t.attenuation);
+}
+
+void narrate_diffuse(const PhongLighting::State& s, StepInfo& info) {
+    const PhongLighting::Light& L = s.in.lights[s.k];
+    const PhongLighting::LightTerms& t = s.out.lights.back();
+    const bool rgb = s.in.rgb;
+    info.line = kLineDiffuse;
+    if (!(t.n_dot_l > 0)) {
+        info.event = "light-behind";
+        info.narration = "l·n = " + num(t.n_dot_l) + " ≤ 0: " + light_name(s.k) +
+                         " is behind the surface (or grazing it) and lights nothing here.";
+        info.math =
+            "l \\cdot n = " + tex(t.n_dot_l) + " \\le 0 \\Rightarrow k_d \\max(l \\cdot n, 0) = 0";
+        return;
+    }
+    info.event = "diffuse";
+    info.narration = "Lambert: att · I · k_d · (l·n) = " + num(t.attenuation) + " · " +
+                     ctext(L.intensity, rgb) + " · " + ctext(s.in.material.kd, rgb) + " · " +
+                     num(t.n_dot_l) + " = " + ctext(t.diffuse, rgb) +
+                     " (l·n is the cosine of the light's angle from the normal).";
+    info.math = "\\text{att}\\, I\\, k_d\\, (l \\cdot n) = " + tex(t.attenuation) + " \\cdot " +
+                ctex(L.intensity, rgb) + " \\cdot " + ctex(s.in.material.kd, rgb) + " \\cdot " +
+                tex(t.n_dot_l) + " = " + ctex(t.diffuse, rgb);
+}
+
+void narrate_specular(const PhongLighting::State& s, StepInfo& info) {
+    const PhongLighting::Light& L = s.in.lights[s.k];
+    const PhongLighting::LightTerms& t = s.out.lights.back();
+    const bool rgb = s.in.rgb;
+    const double p = s.in.material.shininess;
+    info.line = s.in.model == Model::Phong ? kLineSpecular : kLineBlinn;
+    if (!(t.n_dot_l > 0)) {
+        info.event = "no-specular";
+        info.narration = "The light is behind the surface (l·n = " + num(t.n_dot_l) +
+                         "), so there is no highlight from " + light_name(s.k) + " either.";
+        info.math = "l \\cdot n \\le 0 \\Rightarrow \\text{specular} = 0";
+        return;
+    }
+    const std::string tail = " · " + num(t.attenuation) + " · " + ctext(L.intensity, rgb) + " · " +
+                             ctext(s.in.material.ks, rgb) + " = " + ctext(t.specular, rgb) + ".";
+    if (s.in.model == Model::Phong) {
+        info.event = "phong-specular";
+        info.narration = "Phong: r = −l + 2(l·n)n = " + num(t.r) + ", r·v = " + num(t.r_dot_v) +
+                         (t.r_dot_v < 0 ? " (clamped to 0)" : "") +
+                         ", (r·v)^p = " + num(std::max(t.r_dot_v, 0.0)) + "^" + num(p) + " = " +
+                         num(std::pow(std::max(t.r_dot_v, 0.0), p)) + "; specular = that" + tail;
+        info.math = "r = -l + 2(l \\cdot n)n = " + tex(t.r) +
+                    ",\\quad (r \\cdot v)^p = " + tex(std::max(t.r_dot_v, 0.0)) + "^{" + tex(p) +
+                    "} = " + tex(std::pow(std::max(t.r_dot_v, 0.0), p)) +
+                    ",\\quad \\text{att}\\, I\\, k_s\\, (r \\cdot v)^p = " + ctex(t.specular, rgb);
+    } else {
+        info.event = "blinn-specular";
+        info.line = kLineBlinn;
+        info.narration = "Blinn-Phong: h = (v + l)/|v + l| = " + num(t.h) +
+                         ", h·n = " + num(t.n_dot_h) + (t.n_dot_h < 0 ? " (clamped to 0)" : "") +
+                         ", (h·n)^p = " + num(std::max(t.n_dot_h, 0.0)) + "^" + num(p) + " = " +
+                         num(std::pow(std::max(t.n_dot_h, 0.0), p)) + "; specular = that" + tail;
+        info.math = "h = \\frac{v + l}{|v + l|} = " + tex(t.h) +
+                    ",\\quad (h \\cdot n)^p = " + tex(std::max(t.n_dot_h, 0.0)) + "^{" + tex(p) +
+                    "} = " + tex(std::pow(std::max(t.n_dot_h, 0.0), p)) +
+                    ",\\quad \\text{att}\\, I\\, k_s\\, (h \\cdot n)^p = " + ctex(t.specular, rgb);
+    }
+}
+
+void narrate_total(const PhongLighting::State& s, StepInfo& info) {
+    const auto& o = s.out;
+    const bool rgb = s.in.rgb;
+    info.event = "total";
+    info.line = kLineTotal;
+    info.narration = "I = ambient + diffuse + specular = " + ctext(o.ambient, rgb) + " + " +
+                     ctext(o.diffuse, rgb) + " + " + ctext(o.specular, rgb) + " = " +
+                     ctext(o.intensity, rgb) +
+                     (std::max({o.intensity.x, o.intensity.y, o.intensity.z}) > 1
+                          ? " (above 1: a display clamps it)."
+                          : ".");
+    info.math = "I = " + ctex(o.ambient, rgb) + " + " + ctex(o.diffuse, rgb) + " + " +
+                ctex(o.specular, rgb) + " = " + ctex(o.intensity, rgb);
+}
+
+Value color_value(const Color& c, bool rgb) {
+    if (rgb) return vec(c);
+    return c.x;
+}
+
+void fill_vars(const PhongLighting::State& s, StepInfo& info) {
+    const auto& o = s.out;
+    const bool rgb = s.in.rgb;
+    info.vars = {{"n", vec(o.n)}, {"v", vec(o.v)}};
+    if (s.last >= Phase::Ambient) info.vars.push_back({"ambient", color_value(o.ambient, rgb)});
+    if (s.k >= 0) {
+        const auto& t = o.lights.back();
+        info.vars.push_back({"light", static_cast<long long>(s.k)});
+        info.vars.push_back({"l", vec(t.l)});
+        info.vars.push_back({"attenuation", t.attenuation});
+        if (s.last != Phase::LightDir) info.vars.push_back({"n_dot_l", t.n_dot_l});
+        if (s.last == Phase::Specular || s.last == Phase::Total) {
+            if (s.in.model == Model::Phong) {
+                info.vars.push_back({"r", vec(t.r)});
+                info.vars.push_back({"r_dot_v", t.r_dot_v});
+            } else {
+                info.vars.push_back({"h", vec(t.h)});
+                info.vars.push_back({"n_dot_h", t.n_dot_h});
+            }
+        }
+        info.vars.push_back({"diffuse", color_value(o.diffuse, rgb)});
+        info.vars.push_back({"specular", color_value(o.specular, rgb)});
+    }
+    if (s.last == Phase::Total) info.vars.push_back({"intensity", color_value(o.intensity, rgb)});
+}
+
+}  // namespace
+
+void PhongLighting::narrate(const State& s, StepInfo& info) {
+    info.math.clear();
+    switch (s.last) {
+        case Phase::View:
+            narrate_view(s, info);
+            break;
+        case Phase::Ambient:
+            narrate_ambient(s, info);
+            break;
+        case Phase::LightDir:
+            narrate_light(s, info);
+            break;
+        case Phase::Diffuse:
+            narrate_diffuse(s, info);
+            break;
+        case Phase::Specular:
+            narrate_specular(s, info);
+            break;
+        case Phase::Total:
+        case Phase::Done:
+            narrate_total(s, info);
+            break;
+    }
+    fill_vars(s, info);
+}
+
+// ---- [draw] ---------------------------------------------------------------------------------
+
+// 3D: the point on a small patch of its tangent plane, n, v and the eye, every light (a point
+// light where it is, a directional one as incoming rays), and for the light in hand l and the
+// vector the model compares (r with v, or h with n). 2D: cos^p θ against θ in degrees for the
+// material's p and for p/4 and 4p, the half-width where it falls to 1/2, and this light's angle.
+void PhongLighting::draw(const State& s, Scene& scene) {
+    const Input& in = s.in;
+    const dvec3 P = in.point;
+    const double size = std::max(1.0, 0.5 * glm::length(in.eye - P));
+    const dvec3 n = unit_of(in.normal);
+    dvec3 t1 = glm::cross(n, std::fabs(n.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0));
+    t1 = unit_of(t1);
+    const dvec3 t2 = glm::cross(n, t1);
+    const double w = 0.6 * size;
+    scene.faces3.push_back(
+        {{P - w * t1 - w * t2, P + w * t1 - w * t2, P + w * t1 + w * t2, P - w * t1 + w * t2},
+         {Role::Subject, 1.0f},
+         0.3f,
+         true,
+         false});
+    scene.points3.push_back({P, "P", {Role::Subject}, 6.0f});
+    scene.points3.push_back({in.eye, "eye", {Role::Neutral}, 5.0f});
+    scene.segments3.push_back({P, P + size * n, "n", {Role::Neutral, 2.0f}, true});
+    const dvec3 v = unit_of(in.eye - P);
+    scene.segments3.push_back({P, P + size * v, "v", {Role::Window, 2.0f}, true});
+    scene.segments3.push_back({P, in.eye, "", {Role::Construction, 1.0f, true}, false});
+    for (int i = 0; i < static_cast<int>(in.lights.size()); ++i) {
+        const Light& L = in.lights[i];
+        const bool current = i == s.k && s.phase != Phase::Done;
+        const Role role = current ? Role::Active : Role::Construction;
+        if (L.directional) {
+            const dvec3 d = unit_of(L.direction);
+            const dvec3 from = P - 1.8 * size * d;
+            scene.segments3.push_back({from,
+                                       from + 0.8 * size * d,
+                                       light_name(i) + " (directional)",
+                                       {role, 1.5f},
+                                       true});
+        } else {
+            scene.points3.push_back({L.position, light_name(i), {role}, 7.0f});
+            scene.segments3.push_back({L.position, P, "", {role, 1.0f, true}, false});
+        }
+    }
+    if (s.k >= 0 && s.k < static_cast<int>(s.out.lights.size())) {
+        const LightTerms& t = s.out.lights[s.k];
+        scene.segments3.push_back({P, P + size * t.l, "l", {Role::Active, 2.5f}, true});
+        if (s.last == Phase::Specular || (s.phase == Phase::Done && s.k >= 0) ||
+            s.phase == Phase::LightDir) {
+            if (in.model == Model::Phong)
+                scene.segments3.push_back({P, P + size * t.r, "r", {Role::Kept, 2.5f}, true});
+            else if (t.h != dvec3(0.0))
+                scene.segments3.push_back({P, P + size * t.h, "h", {Role::Kept, 2.5f}, true});
+        }
+    }
+    scene.extent3 = 1.5 * size;
+
+    // 2D: the highlight's shape. x = θ/90° so the plot is as wide as it is tall.
+    const double p = in.material.shininess;
+    auto curve = [&](double pp, Role role, float width, const std::string& label) {
+        std::vector<dvec2> pts;
+        for (int i = 0; i <= 90; ++i) {
+            const double deg = -90.0 + 2.0 * i, c = std::cos(deg * 3.141592653589793 / 180);
+            pts.push_back({deg / 90, std::pow(std::max(c, 0.0), pp)});
+        }
+        scene.polygons.push_back({pts, {role, width}, false, false});
+        // Half-width: cos^p θ = 1/2 at θ = acos(2^(−1/p)).
+        if (pp > 0) {
+            const double half = std::acos(std::pow(0.5, 1 / pp)) * 180 / 3.141592653589793;
+            scene.labels.push_back(
+                {{half / 90, 0.5}, label + ": half-width " + num(half, 3) + "°", {role}});
+        }
+    };
+    scene.segments.push_back({{-1.05, 0}, {1.1, 0}, "θ", {Role::Neutral, 1.0f}, true});
+    scene.segments.push_back({{0, 0}, {0, 1.15}, "", {Role::Neutral, 1.0f}, true});
+    scene.labels.push_back(
+        {{-1, 1.15}, "cos^p θ: the highlight's fall-off (θ from 0 to ±90°)", {Role::Neutral}});
+    scene.labels.push_back({{-1, -0.08}, "−90°", {Role::Neutral}});
+    scene.labels.push_back({{1, -0.08}, "90°", {Role::Neutral}});
+    if (p > 0) curve(p / 4, Role::Construction, 1.0f, "p = " + num(p / 4, 3));
+    curve(4 * std::max(p, 0.25), Role::Construction, 1.0f, "p = " + num(4 * std::max(p, 0.25), 3));
+    curve(p, Role::Active, 2.5f, "p = " + num(p, 3));
+    if (s.k >= 0 && s.k < static_cast<int>(s.out.lights.size()) &&
+        (s.last == Phase::Specular || s.phase == Phase::Done) && s.out.lights[s.k].n_dot_l > 0) {
+        const LightTerms& t = s.out.lights[s.k];
+        const double c = in.model == Model::Phong ? t.r_dot_v : t.n_dot_h;
+        const double deg = std::acos(std::clamp(c, -1.0, 1.0)) * 180 / 3.141592653589793;
+        if (deg <= 90)
+            scene.points.push_back({{deg / 90, std::pow(std::max(c, 0.0), p)},
+                                    light_name(s.k) + ": θ = " + num(deg, 3) + "°",
+                                    {Role::Kept},
+                                    6.0f});
+    }
+}
+
+}  // namespace cg
