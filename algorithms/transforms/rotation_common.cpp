@@ -193,3 +193,31 @@ void draw_circle(Scene& scene, dvec3 centre, dvec3 normal, double radius, Style 
 }
 
 }  // namespace cg::rot
+
+namespace cg::rot {
+
+bool valid_order(const std::string& order) {
+    return order.size() == 3 && order.find_first_not_of("xyz") == std::string::npos &&
+           order[0] != order[1] && order[1] != order[2] && order[0] != order[2];
+}
+
+glm::dmat3 euler_matrix(const std::string& order, glm::dvec3 angles_deg) {
+    glm::dmat3 m(1.0);
+    for (int n = 0; n < 3; ++n) m = rotation(order[n] - 'x', cos_sin_deg(angles_deg[n])) * m;
+    return m;
+}
+
+glm::dvec3 euler_xyz_of(const glm::dmat3& m) {
+    // R = R_z(c) R_y(b) R_x(a): row 2 is (−sin b, cos b sin a, cos b cos a), column 0 is
+    // (cos c cos b, sin c cos b, −sin b).
+    const double cb = std::hypot(m[0][0], m[0][1]);
+    const double b = std::atan2(-m[0][2], cb);
+    if (cb < 1e-12) {  // locked: only c − a (b = 90°) or c + a (b = −90°) is defined; a = 0
+        const double c = std::atan2(-m[1][0], m[1][1]);
+        return {0.0, wrap_deg(deg(b)), wrap_deg(deg(c))};
+    }
+    return {wrap_deg(deg(std::atan2(m[1][2], m[2][2]))), deg(b),
+            wrap_deg(deg(std::atan2(m[0][1], m[0][0])))};
+}
+
+}  // namespace cg::rot

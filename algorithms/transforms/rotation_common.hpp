@@ -78,3 +78,18 @@ void draw_arc(Scene& scene, glm::dvec3 centre, glm::dvec3 normal, glm::dvec3 sta
 glm::dvec3 perpendicular(glm::dvec3 n);
 
 }  // namespace cg::rot
+
+namespace cg::rot {
+
+// ---- Euler angles (shared by the Euler-angle and slerp lessons) ----
+// `order` names the three rolls in the order they are applied: "xyz" rolls about x first, then
+// y, then z, all about the fixed world axes, so with column vectors
+//   R = R_z(θ3) R_y(θ2) R_x(θ1),  angles (θ1, θ2, θ3) in the order of the letters.
+// The six orders use each axis once (Tait–Bryan angles).
+bool valid_order(const std::string& order);
+glm::dmat3 euler_matrix(const std::string& order, glm::dvec3 angles_deg);
+// The angles (degrees, order "xyz") of a rotation matrix: θ2 ∈ [−90, 90], θ1, θ3 ∈ (−180, 180];
+// at gimbal lock (cos θ2 = 0) θ1 is taken as 0.
+glm::dvec3 euler_xyz_of(const glm::dmat3& m);
+
+}  // namespace cg::rot

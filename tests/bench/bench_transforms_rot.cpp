@@ -8,6 +8,7 @@
 #include "core/rng.hpp"
 #include "io/registry.hpp"
 #include "transforms/arbitrary_axis.hpp"
+#include "transforms/slerp.hpp"
 
 namespace {
 
@@ -55,5 +56,69 @@ void BM_ArbitraryAxis_StepAndPicture(benchmark::State& state) {
     cg::bench::step_and_picture(state, "arbitrary-axis");
 }
 BENCHMARK(BM_ArbitraryAxis_StepAndPicture)->Unit(benchmark::kMicrosecond);
+
+// Slerp: the plain function computes only q(u) and its matrix, so the state machine is run
+// to the matrix step (the nine comparison samples are the lesson's extra, measured apart).
+const std::vector<cg::Slerp::Input>& pairs() {
+    static const std::vector<cg::Slerp::Input> inputs = [] {
+        cg::Rng rng(42);
+        std::vector<cg::Slerp::Input> v(100'000);
+        for (auto& in : v) {
+            in.q0 = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+            in.q1 = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+            in.u = rng.uniform(0, 1);
+        }
+        return v;
+    }();
+    return inputs;
+}
+
+void BM_Slerp_Plain(benchmark::State& state) {
+    const auto& inputs = pairs();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) sum += cg::Slerp::interpolate(in).matrix[0][0];
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_Slerp_Plain)->Unit(benchmark::kMillisecond);
+
+[[gnu::flatten]] double slerp_machine(const cg::Slerp::Input& in) {
+    cg::Slerp::State s;
+    s.in = in;
+    while (s.phase != cg::Slerp::Phase::Sample) cg::Slerp::step(s, nullptr);
+    return s.matrix[0][0];
+}
+
+void BM_Slerp_StateMachine(benchmark::State& state) {
+    const auto& inputs = pairs();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) sum += slerp_machine(in);
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_Slerp_StateMachine)->Unit(benchmark::kMillisecond);
+
+// The whole lesson run, with the nine samples of the three paths.
+void BM_Slerp_StateMachineWithPaths(benchmark::State& state) {
+    const auto& inputs = pairs();
+    for (auto _ : state) {
+        double sum = 0;
+        for (std::size_t i = 0; i < inputs.size(); i += 10) {
+            cg::Slerp::State s;
+            s.in = inputs[i];
+            sum += cg::run_to_end<cg::Slerp>(std::move(s)).matrix[0][0];
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * (inputs.size() / 10));
+}
+BENCHMARK(BM_Slerp_StateMachineWithPaths)->Unit(benchmark::kMillisecond);
+
+void BM_Slerp_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "slerp"); }
+BENCHMARK(BM_Slerp_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
