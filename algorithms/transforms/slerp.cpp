@@ -221,17 +221,18 @@ void Slerp::advance(State& s) {
             return;
         case Phase::Matrix:
             s.matrix = to_matrix(s.q);
-            s.m0 = to_matrix(s.q0);
-            s.m1 = to_matrix(s.q1);
-            s.e0 = rot::euler_xyz_of(s.m0);
-            s.e1 = rot::euler_xyz_of(s.m1);
-            s.tip_slerp.reserve(kSamples);
-            s.tip_matrix.reserve(kSamples);
-            s.tip_euler.reserve(kSamples);
             s.phase = Phase::Sample;
             return;
         case Phase::Sample: {  // One u on the three paths
-            ++s.k;
+            if (++s.k == 0) {  // the keys as matrices and as Euler angles, once
+                s.m0 = to_matrix(s.q0);
+                s.m1 = to_matrix(s.q1);
+                s.e0 = rot::euler_xyz_of(s.m0);
+                s.e1 = rot::euler_xyz_of(s.m1);
+                s.tip_slerp.reserve(kSamples);
+                s.tip_matrix.reserve(kSamples);
+                s.tip_euler.reserve(kSamples);
+            }
             const double u = s.k / double(kSamples - 1);
             const dquat q = blend(s.q0, s.q1, weights(s.q0, s.q1, u));
             s.tip_slerp.push_back(to_matrix(q)[0]);
@@ -338,9 +339,7 @@ void narrate_matrix(const State& s, StepInfo& info) {
     info.event = "matrix";
     info.line = kLineMatrix;
     info.narration = "As a matrix, q(u) = " + rot::matrix_text(s.matrix) +
-                     " (its first column is P′ above). For the paths: q0 has Euler angles "
-                     "(x, y, z rolls, in that order) " + num(s.e0, 4) + "°, q1 " + num(s.e1, 4) +
-                     "°.";
+                     " (its first column is P′ above).";
     info.math = "M = \\begin{bmatrix} 1 - 2(y^2 + z^2) & 2(xy - wz) & 2(xz + wy) \\\\ 2(xy + wz) & "
                 "1 - 2(x^2 + z^2) & 2(yz - wx) \\\\ 2(xz - wy) & 2(yz + wx) & 1 - 2(x^2 + y^2) "
                 "\\end{bmatrix} = " + rot::matrix_tex(s.matrix);
@@ -355,7 +354,11 @@ void narrate_sample(const State& s, StepInfo& info) {
         rot::deg(std::atan2(glm::length(glm::cross(a, c)), glm::dot(a, c)));
     info.event = "sample";
     info.line = kLineSample;
-    info.narration = "u = " + num(u, 4) + ": the x axis's tip is at " + num(a, 4) +
+    const std::string keys =
+        s.k == 0 ? "For the comparison, q0 has Euler angles (x, y, z rolls, in that order) " +
+                       num(s.e0, 4) + "° and q1 " + num(s.e1, 4) + "°. "
+                 : "";
+    info.narration = keys + "u = " + num(u, 4) + ": the x axis's tip is at " + num(a, 4) +
                      " under slerp; lerp of the matrices puts it at " + num(b, 4) +
                      ", length " + num(glm::length(b), 4) +
                      (glm::length(b) < 1 - 1e-9 ? " (inside the sphere: the blend is no rotation)"

@@ -8,6 +8,7 @@
 #include "core/rng.hpp"
 #include "io/registry.hpp"
 #include "transforms/arbitrary_axis.hpp"
+#include "transforms/euler_angles.hpp"
 #include "transforms/slerp.hpp"
 
 namespace {
@@ -120,5 +121,50 @@ BENCHMARK(BM_Slerp_StateMachineWithPaths)->Unit(benchmark::kMillisecond);
 
 void BM_Slerp_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "slerp"); }
 BENCHMARK(BM_Slerp_StepAndPicture)->Unit(benchmark::kMicrosecond);
+
+const std::vector<cg::EulerAngles::Input>& eulers() {
+    static const std::vector<cg::EulerAngles::Input> inputs = [] {
+        static const char* kOrders[] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx"};
+        cg::Rng rng(42);
+        std::vector<cg::EulerAngles::Input> v(100'000);
+        for (auto& in : v) {
+            in.order = kOrders[rng.integer(0, 5)];
+            in.angles_deg = {rng.uniform(-180, 180), rng.uniform(-90, 90), rng.uniform(-180, 180)};
+        }
+        return v;
+    }();
+    return inputs;
+}
+
+void BM_EulerAngles_Plain(benchmark::State& state) {
+    const auto& inputs = eulers();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) sum += cg::EulerAngles::compose(in).matrix[0][0];
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_EulerAngles_Plain)->Unit(benchmark::kMillisecond);
+
+void BM_EulerAngles_StateMachine(benchmark::State& state) {
+    const auto& inputs = eulers();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) {
+            cg::EulerAngles::State s;
+            s.in = in;
+            sum += cg::run_to_end<cg::EulerAngles>(std::move(s)).matrix[0][0];
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_EulerAngles_StateMachine)->Unit(benchmark::kMillisecond);
+
+void BM_EulerAngles_StepAndPicture(benchmark::State& state) {
+    cg::bench::step_and_picture(state, "euler-angles");
+}
+BENCHMARK(BM_EulerAngles_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
