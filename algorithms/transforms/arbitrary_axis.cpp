@@ -141,51 +141,42 @@ void ArbitraryAxis::advance(State& s) {
         case Phase::Choose: {  // Pick the closest coordinate axis
             const Frame f = choose(s.in.axis);
             s.i = f.i, s.j = f.j, s.k = f.k;
-            const double n = glm::length(f.as);
-            s.length = f.scale * n;
-            s.unit = f.as / n;
+            s.scale = f.scale;
+            s.as = f.as;
             s.phase = Phase::ToPlane;
             return;
         }
         case Phase::ToPlane: {  // Turn a into the i–j plane
-            const Frame f = choose(s.in.axis);
+            const Frame f{s.i, s.j, s.k, s.scale, s.as};
             s.phi = phi_of(f);
             s.phi_deg = phi_deg_of(f);
             s.to_plane = rot::rotation(s.j, rot::inverse(s.phi));
-            s.c = s.to_plane * s.in.axis;
-            s.so_far = s.to_plane;
             s.phase = Phase::ToAxis;
             return;
         }
         case Phase::ToAxis: {  // ... and onto axis i
-            const Frame f = choose(s.in.axis);
+            const Frame f{s.i, s.j, s.k, s.scale, s.as};
             s.gamma = gamma_of(f);
             s.gamma_deg = gamma_deg_of(f);
             s.to_axis = rot::rotation(s.k, rot::inverse(s.gamma));
-            s.d = s.to_axis * s.c;
-            s.so_far = s.to_axis * s.so_far;
             s.phase = Phase::Rotate;
             return;
         }
         case Phase::Rotate:  // Rotate by θ about axis i
             s.theta = rot::cos_sin_deg(s.in.angle_deg);
             s.spin = rot::rotation(s.i, s.theta);
-            s.so_far = s.spin * s.so_far;
             s.phase = Phase::UndoAxis;
             return;
         case Phase::UndoAxis:  // Undo the turn onto the axis
             s.undo_axis = rot::rotation(s.k, s.gamma);
-            s.so_far = s.undo_axis * s.so_far;
             s.phase = Phase::UndoPlane;
             return;
         case Phase::UndoPlane:  // Undo the turn into the plane
             s.undo_plane = rot::rotation(s.j, s.phi);
-            s.so_far = s.undo_plane * s.so_far;
             s.phase = Phase::Compose;
             return;
         case Phase::Compose:  // The product, as the course writes it
             s.R = s.undo_plane * s.undo_axis * s.spin * s.to_axis * s.to_plane;
-            s.so_far = s.R;
             s.rotated.reserve(s.in.points.size());
             s.phase = s.in.points.empty() ? Phase::Done : Phase::Points;
             return;
@@ -201,9 +192,28 @@ void ArbitraryAxis::advance(State& s) {
 
 // ---- [narrate] ------------------------------------------------------------------------------
 
+double ArbitraryAxis::length(const State& s) { return s.scale * glm::length(s.as); }
+dvec3 ArbitraryAxis::unit(const State& s) { return s.as / glm::length(s.as); }
+
+dmat3 ArbitraryAxis::applied(const State& s) {
+    if (s.phase == Phase::Choose) return dmat3(1.0);
+    switch (s.last) {
+        case Phase::Choose: return dmat3(1.0);
+        case Phase::ToPlane: return s.to_plane;
+        case Phase::ToAxis: return s.to_axis * s.to_plane;
+        case Phase::Rotate: return s.spin * s.to_axis * s.to_plane;
+        case Phase::UndoAxis: return s.undo_axis * s.spin * s.to_axis * s.to_plane;
+        case Phase::UndoPlane: return s.undo_plane * s.undo_axis * s.spin * s.to_axis * s.to_plane;
+        default: return s.R;
+    }
+}
+
 namespace {
 
 using State = ArbitraryAxis::State;
+
+dvec3 c_of(const State& s) { return s.to_plane * s.in.axis; }              // R_j(−φ) a
+dvec3 d_of(const State& s) { return s.to_axis * (s.to_plane * s.in.axis); }  // |a| e_i
 
 std::string deg_text(double d) { return num(d, 6) + "°"; }
 
@@ -214,12 +224,12 @@ void narrate_choose(const State& s, StepInfo& info) {
     for (int c = 0; c < 3; ++c) zeros += a[c] == 0;
     const dvec3 m = glm::abs(a);
     const bool tie = (s.i < s.j && m[s.j] == m[s.i]) || (s.i < s.k && m[s.k] == m[s.i]);
-    std::string t = "a = " + num(a) + ", |a| = " + num(s.length, 6);
-    t += std::fabs(s.length - 1) <= 1e-12
+    std::string t = "a = " + num(a) + ", |a| = " + num(ArbitraryAxis::length(s), 6);
+    t += std::fabs(ArbitraryAxis::length(s) - 1) <= 1e-12
              ? " (a unit vector)"
              : " (not unit length, which does not matter: the construction uses only ratios of "
                "a's components, so a and a/|a| = " +
-                   num(s.unit, 4) + " give the same matrix)";
+                   num(ArbitraryAxis::unit(s), 4) + " give the same matrix)";
     t += ". The largest component is |" + comp(s.i) + "| = " + num(m[s.i]) +
          (tie ? " (a tie, which goes to the earlier axis)" : "") + ", so a is closest to the " +
          I + " axis: turn it about " + J + " into the " + plane_name(s.i, s.j) +
@@ -235,7 +245,7 @@ void narrate_choose(const State& s, StepInfo& info) {
     info.event = "choose-axis";
     info.line = kLineChoose;
     info.narration = t;
-    info.math = "a = " + tex(a) + ",\\; |a| = " + tex(s.length, 6) + ",\\; i = " + I +
+    info.math = "a = " + tex(a) + ",\\; |a| = " + tex(ArbitraryAxis::length(s), 6) + ",\\; i = " + I +
                 ":\\; R(\\theta, a) = R_" + J + "(\\phi)\\, R_" + K + "(\\gamma)\\, R_" + I +
                 "(\\theta)\\, R_" + K + "(-\\gamma)\\, R_" + J + "(-\\phi)";
 }
@@ -249,7 +259,7 @@ void narrate_to_plane(const State& s, StepInfo& info) {
     if (s.phi_deg == 0) {
         info.event = "already-in-plane";
         info.narration = "a already lies in the " + plane + " plane (" + ak + " = 0, " + ai +
-                         " > 0): φ = 0°, R_" + J + "(−φ) = I and c = a = " + num(s.c, 4) + ".";
+                         " > 0): φ = 0°, R_" + J + "(−φ) = I and c = a = " + num(c_of(s), 4) + ".";
     } else {
         info.event = "to-plane";
         info.narration = "Project a onto the " + plane_name(s.i, s.k) + " plane: b has " + ai +
@@ -258,7 +268,7 @@ void narrate_to_plane(const State& s, StepInfo& info) {
                          num(s.phi.c, 4) + ", sin φ = −" + ak + "/r = " + num(s.phi.s, 4) +
                          ", so φ = " + deg_text(s.phi_deg) + ". R_" + J + "(−φ) = " + M +
                          " turns a about " + J + " into the " + plane + " plane: c = R_" + J +
-                         "(−φ) a = " + num(s.c, 4) + ".";
+                         "(−φ) a = " + num(c_of(s), 4) + ".";
     }
     info.line = kLineToPlane;
     info.math = "\\cos\\phi = \\frac{" + ai + "}{\\sqrt{" + ai + "^2 + " + ak + "^2}} = " +
@@ -266,7 +276,7 @@ void narrate_to_plane(const State& s, StepInfo& info) {
                 ak + "^2}} = " + tex(rot::clean(s.phi.s), 4) + ",\\; \\phi = " +
                 tex(s.phi_deg, 6) + "^\\circ,\\; c = R_" + J + "(-\\phi)\\, a = " +
                 rot::matrix_tex(s.to_plane, true) + rot::vector_tex(a) + " = " +
-                rot::vector_tex(s.c);
+                rot::vector_tex(c_of(s));
 }
 
 void narrate_to_axis(const State& s, StepInfo& info) {
@@ -275,23 +285,23 @@ void narrate_to_axis(const State& s, StepInfo& info) {
     const std::string M = rot::matrix_text(s.to_axis);
     if (s.gamma_deg == 0) {
         info.event = "already-on-axis";
-        info.narration = std::string("c = ") + num(s.c, 4) + " already lies on the " + I +
+        info.narration = std::string("c = ") + num(c_of(s), 4) + " already lies on the " + I +
                          " axis (" + aj + " = 0): γ = 0°, R_" + K + "(−γ) = I.";
     } else {
         info.event = "to-axis";
-        info.narration = "In the " + plane + " plane c = " + num(s.c, 4) + " makes the angle γ with the " +
+        info.narration = "In the " + plane + " plane c = " + num(c_of(s), 4) + " makes the angle γ with the " +
                          I + " axis: cos γ = r/|a| = " + num(s.gamma.c, 4) + ", sin γ = " + aj +
                          "/|a| = " + num(s.gamma.s, 4) + ", γ = " + deg_text(s.gamma_deg) +
                          ". R_" + K + "(−γ) = " + M + " turns c about " + K + " onto the " + I +
-                         " axis: R_" + K + "(−γ) c = " + num(s.d, 4) + " = |a| e_" + I + ".";
+                         " axis: R_" + K + "(−γ) c = " + num(d_of(s), 4) + " = |a| e_" + I + ".";
     }
     info.line = kLineToAxis;
     info.math = "\\cos\\gamma = \\frac{\\sqrt{a_" + std::string(1, I) + "^2 + a_" +
                 std::string(1, axis_name(s.k)) + "^2}}{|a|} = " + tex(s.gamma.c, 4) +
                 ",\\; \\sin\\gamma = \\frac{" + aj + "}{|a|} = " + tex(rot::clean(s.gamma.s), 4) +
                 ",\\; \\gamma = " + tex(s.gamma_deg, 6) + "^\\circ,\\; R_" + K + "(-\\gamma)\\, c = " +
-                rot::matrix_tex(s.to_axis, true) + rot::vector_tex(s.c) + " = " +
-                rot::vector_tex(s.d);
+                rot::matrix_tex(s.to_axis, true) + rot::vector_tex(c_of(s)) + " = " +
+                rot::vector_tex(d_of(s));
 }
 
 void narrate_rotate(const State& s, StepInfo& info) {
@@ -326,7 +336,7 @@ void narrate_undo(const State& s, StepInfo& info, bool axis) {
 
 void narrate_compose(const State& s, StepInfo& info) {
     const char I = axis_name(s.i), J = axis_name(s.j), K = axis_name(s.k);
-    const dvec3 Ra = s.R * s.unit;
+    const dvec3 Ra = s.R * ArbitraryAxis::unit(s);
     info.event = "compose";
     info.line = kLineCompose;
     info.narration = std::string("R = R_") + J + "(φ) R_" + K + "(γ) R_" + I + "(θ) R_" + K +
@@ -356,13 +366,13 @@ void narrate_point(const State& s, StepInfo& info) {
 void fill_vars(const State& s, StepInfo& info) {
     const char I = axis_name(s.i), J = axis_name(s.j), K = axis_name(s.k);
     info.vars = {{"a", vec(s.in.axis)},
-                 {"|a|", s.length},
+                 {"|a|", ArbitraryAxis::length(s)},
                  {"theta_deg", s.in.angle_deg},
                  {"canonical_axis", std::string(1, I)}};
     if (s.last >= Phase::ToPlane) {
         info.vars.push_back({"phi_deg", s.phi_deg});
         info.vars.push_back({std::string("R_") + J + "(-phi)", rot::rows4(s.to_plane)});
-        info.vars.push_back({"c", vec(s.c)});
+        info.vars.push_back({"c", vec(c_of(s))});
     }
     if (s.last >= Phase::ToAxis) {
         info.vars.push_back({"gamma_deg", s.gamma_deg});
@@ -411,6 +421,10 @@ ArbitraryAxis::Result ArbitraryAxis::result(const State& s) {
     return {s.R, s.phi_deg, s.gamma_deg, s.i, s.rotated};
 }
 
+ArbitraryAxis::Result ArbitraryAxis::result(State&& s) {
+    return {s.R, s.phi_deg, s.gamma_deg, s.i, std::move(s.rotated)};
+}
+
 [[gnu::flatten]] ArbitraryAxis::Result ArbitraryAxis::rotate(const Input& in) {
     const Frame f = choose(in.axis);
     const CosSin phi = phi_of(f), gamma = gamma_of(f);
@@ -433,16 +447,17 @@ ArbitraryAxis::Result ArbitraryAxis::result(const State& s) {
 // matrices applied so far have taken it), the angle of the current step as an arc, and the
 // input points with their images.
 void ArbitraryAxis::draw(const State& s, Scene& scene) {
-    const dvec3 unit = s.phase == Phase::Choose ? choose(s.in.axis).as / glm::length(choose(s.in.axis).as)
-                                                : s.unit;
+    const Frame f = choose(s.in.axis);
+    const dvec3 unit = f.as / glm::length(f.as);
+    const dmat3 so_far = applied(s);
     double reach = 2.0;
     for (const dvec3& p : s.in.points) reach = std::max(reach, 1.15 * glm::length(p));
     scene.extent3 = reach;
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.3, "", 0.9f});
 
     const double L = 0.85 * reach;
-    const dvec3 now = s.so_far * unit;
-    const bool moved = s.so_far != dmat3(1.0);
+    const dvec3 now = so_far * unit;
+    const bool moved = so_far != dmat3(1.0);
     const Style axis_style{Role::Active, 3.0f};
     const Style construction{Role::Construction, 1.0f, true};
     scene.segments3.push_back({-L * now, L * now, "", axis_style, true});
@@ -463,7 +478,7 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
     h.centre = 1.0 * h.front;
     h.size = 0.55;
     if (moved) rot::draw_house(scene, h, dmat3(1.0), true);
-    rot::draw_house(scene, h, s.so_far, false);
+    rot::draw_house(scene, h, so_far, false);
 
     const dvec3 ei(s.i == 0, s.i == 1, s.i == 2), ej(s.j == 0, s.j == 1, s.j == 2),
         ek(s.k == 0, s.k == 1, s.k == 2);
@@ -485,7 +500,7 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
                                   "−γ = " + num(-s.gamma_deg, 4) + "°");
                 break;
             case Phase::Rotate: {
-                const dvec3 before = glm::transpose(s.spin) * (s.so_far * h.centre);
+                const dvec3 before = glm::transpose(s.spin) * (so_far * h.centre);
                 const dvec3 on = glm::dot(before, ei) * ei, off = before - on;
                 if (glm::length(off) > 0)
                     rot::draw_arc(scene, on, ei, off / glm::length(off), glm::length(off), 0,

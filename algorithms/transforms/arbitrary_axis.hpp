@@ -72,13 +72,11 @@ struct ArbitraryAxis {
         Phase phase = Phase::Choose;
         Phase last = Phase::Choose;
         int i = 0, j = 1, k = 2;  // the canonical axis and the two after it
-        double length = 0;        // |a|
-        glm::dvec3 unit{1, 0, 0};  // a / |a|
+        double scale = 1;         // max |a_i|
+        glm::dvec3 as{1, 0, 0};   // a / scale (what the angles are computed from)
         double phi_deg = 0, gamma_deg = 0;
         rot::CosSin phi, gamma, theta;  // cos and sin of φ, γ, θ
-        glm::dvec3 c{0}, d{0};         // c = R_j(−φ) a, d = R_k(−γ) c = |a| e_i
         glm::dmat3 to_plane{1.0}, to_axis{1.0}, spin{1.0}, undo_axis{1.0}, undo_plane{1.0};
-        glm::dmat3 so_far{1.0};  // the product of the matrices applied so far (for the picture)
         glm::dmat3 R{1.0};
         int p = -1;                       // the point rotated last (−1: none yet)
         std::vector<glm::dvec3> rotated;  // R P so far
@@ -91,6 +89,7 @@ struct ArbitraryAxis {
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
+    static Result result(State&& s);  // moves the rotated points out (run_to_end)
     static void draw(const State& s, Scene& scene);
 
     // Exam practice (arbitrary_axis_exam.cpp).
@@ -100,6 +99,11 @@ struct ArbitraryAxis {
 
     // The same construction as one straight-line function, for the benchmark.
     static Result rotate(const Input& in);
+
+    // For the narration and the picture (computed there, not while stepping):
+    static double length(const State& s);         // |a|
+    static glm::dvec3 unit(const State& s);       // a / |a|
+    static glm::dmat3 applied(const State& s);    // the product of the matrices applied so far
 
 private:
     static void advance(State& s);

@@ -96,12 +96,10 @@ void EulerAngles::advance(State& s) {
     switch (s.phase) {
         case Phase::Roll:  // One roll, applied after those before it
             ++s.k;
-            s.rolls[s.k] = rot::rotation(axis_of(s.in.order, s.k), rot::cos_sin_deg(s.in.angles_deg[s.k]));
-            s.so_far = s.rolls[s.k] * s.so_far;
+            s.R = rot::rotation(axis_of(s.in.order, s.k), rot::cos_sin_deg(s.in.angles_deg[s.k])) * s.R;
             if (s.k == 2) s.phase = Phase::Compose;
             return;
-        case Phase::Compose:  // R = R_c(θ3) R_b(θ2) R_a(θ1)
-            s.R = s.so_far;
+        case Phase::Compose:  // R = R_c(θ3) R_b(θ2) R_a(θ1), already multiplied: say so
             s.phase = Phase::Gimbal;
             return;
         case Phase::Gimbal: {  // The lock test, and the demonstration
@@ -125,6 +123,10 @@ using State = EulerAngles::State;
 
 std::string deg_text(double d) { return num(d, 6) + "°"; }
 
+dmat3 roll(const State& s, int n) {
+    return rot::rotation(axis_of(s.in.order, n), rot::cos_sin_deg(s.in.angles_deg[n]));
+}
+
 void narrate_roll(const State& s, StepInfo& info) {
     const std::string& o = s.in.order;
     const int n = s.k;
@@ -134,17 +136,17 @@ void narrate_roll(const State& s, StepInfo& info) {
     info.line = kLineRoll;
     std::string t = std::string(kOrdinal[n]) + " roll, about " + o[n] + " by " + theta(n) + " = " +
                     deg_text(s.in.angles_deg[n]) + " (cos " + num(cs.c, 4) + ", sin " +
-                    num(cs.s, 4) + "): " + roll_name(o, n) + " = " + rot::matrix_text(s.rolls[n]);
+                    num(cs.s, 4) + "): " + roll_name(o, n) + " = " + rot::matrix_text(roll(s, n));
     if (n > 0) {
         t += ". It acts after the roll" + std::string(n > 1 ? "s" : "") +
              " before it, so it multiplies from the left: ";
         for (int m = n; m >= 0; --m) t += roll_name(o, m) + (m ? " " : "");
-        t += " = " + rot::matrix_text(s.so_far);
+        t += " = " + rot::matrix_text(s.R);
     }
     info.narration = t + ".";
     info.math = std::string("R_") + o[n] + "(" + tex(s.in.angles_deg[n]) + "^\\circ) = " +
-                rot::matrix_tex(s.rolls[n]);
-    if (n > 0) info.math += ",\\quad \\text{so far: } " + rot::matrix_tex(s.so_far);
+                rot::matrix_tex(roll(s, n));
+    if (n > 0) info.math += ",\\quad \\text{so far: } " + rot::matrix_tex(s.R);
 }
 
 void narrate_compose(const State& s, StepInfo& info) {
@@ -155,8 +157,8 @@ void narrate_compose(const State& s, StepInfo& info) {
                      ", so R = " + roll_name(o, 2) + " " + roll_name(o, 1) + " " + roll_name(o, 0) +
                      " = " + rot::matrix_text(s.R) + ". Its columns are where the x, y and z axes go.";
     info.math = std::string("R = R_") + o[2] + "(\\theta_3) R_" + o[1] + "(\\theta_2) R_" + o[0] +
-                "(\\theta_1) = " + rot::matrix_tex(s.rolls[2]) + rot::matrix_tex(s.rolls[1]) +
-                rot::matrix_tex(s.rolls[0]) + " = " + rot::matrix_tex(s.R);
+                "(\\theta_1) = " + rot::matrix_tex(roll(s, 2)) + rot::matrix_tex(roll(s, 1)) +
+                rot::matrix_tex(roll(s, 0)) + " = " + rot::matrix_tex(s.R);
 }
 
 // The demonstration: θ1 + 30°, θ3 − s·30°, and how much the matrix changes. Computed for the
@@ -208,8 +210,8 @@ void fill_vars(const State& s, StepInfo& info) {
     info.vars = {{"order", o}, {"angles_deg", vec(s.in.angles_deg)}};
     for (int n = 0; n <= std::min(s.k, 2); ++n)
         info.vars.push_back({std::string("R_") + o[n] + "(theta" + char('1' + n) + ")",
-                             rot::rows3(s.rolls[n])});
-    info.vars.push_back({"so far", rot::rows3(s.so_far)});
+                             rot::rows3(roll(s, n))});
+    info.vars.push_back({"so far", rot::rows3(s.R)});
     if (s.last >= Phase::Compose) info.vars.push_back({"R", rot::rows3(s.R)});
     if (s.last >= Phase::Gimbal) {
         info.vars.push_back({"cos theta2", s.cos_mid});
@@ -273,10 +275,10 @@ void EulerAngles::draw(const State& s, Scene& scene) {
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5, "", 0.35f});
     rot::HousePlacement h;
     h.size = 0.9;
-    const bool moved = s.so_far != dmat3(1.0);
+    const bool moved = s.R != dmat3(1.0);
     if (moved) rot::draw_house(scene, h, dmat3(1.0), true);
-    rot::draw_house(scene, h, s.so_far, false);
-    scene.frames3.push_back({{0, 0, 0}, s.so_far[0], s.so_far[1], s.so_far[2], 1.2, "R·", 1.0f});
+    rot::draw_house(scene, h, s.R, false);
+    scene.frames3.push_back({{0, 0, 0}, s.R[0], s.R[1], s.R[2], 1.2, "R·", 1.0f});
 
     if (s.last == Phase::Roll && s.k >= 0) {
         const int a = axis_of(o, s.k);

@@ -56,9 +56,7 @@ struct EulerAngles {
         Phase phase = Phase::Roll;
         Phase last = Phase::Roll;
         int k = -1;                       // the roll applied last (0, 1, 2)
-        glm::dmat3 rolls[3] = {glm::dmat3(1.0), glm::dmat3(1.0), glm::dmat3(1.0)};
-        glm::dmat3 so_far{1.0};           // the rolls applied so far, multiplied
-        glm::dmat3 R{1.0};
+        glm::dmat3 R{1.0};                // the rolls applied so far, multiplied (all three: R)
         bool lock = false;
         int sign = 0;
         double cos_mid = 1;               // cos θ2

@@ -240,3 +240,32 @@ TEST_CASE("euler-angles: the picture shows the rolls and, at the lock, two axes 
         CHECK(scene.frames3[1].z == s.R[2]);
     }
 }
+
+TEST_CASE("rotations: every step's 3D picture is finite, on examples, presets and exam problems",
+          "[transforms][euler-angles][slerp][arbitrary-axis]") {
+    const cg::Registry registry = cg::builtin_registry();
+    auto finite = [](dvec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    for (const char* id : {"arbitrary-axis", "slerp", "euler-angles"}) {
+        const cg::Algorithm& a = *registry.find(id);
+        std::vector<cg::json> inputs{a.example()};
+        for (std::uint64_t seed = 0; seed < 40; ++seed) inputs.push_back(a.exam_input(seed));
+        for (const cg::json& input : inputs) {
+            CAPTURE(id, input.dump());
+            auto run = a.create(input);
+            while (!run->done()) {
+                run->step(nullptr);
+                cg::Scene scene;
+                run->draw(scene);
+                REQUIRE(scene.has_3d());
+                for (const auto& f : scene.faces3)
+                    for (const auto& p : f.points) REQUIRE(finite(p));
+                for (const auto& s : scene.segments3) REQUIRE((finite(s.a) && finite(s.b)));
+                for (const auto& p : scene.points3) REQUIRE(finite(p.p));
+                for (const auto& l : scene.labels3) REQUIRE(finite(l.p));
+                for (const auto& fr : scene.frames3)
+                    REQUIRE((finite(fr.x) && finite(fr.y) && finite(fr.z)));
+                REQUIRE(std::isfinite(scene.extent3));
+            }
+        }
+    }
+}
