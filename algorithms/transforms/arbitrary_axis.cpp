@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
@@ -51,7 +50,9 @@ CosSin phi_of(const Frame& f) {
     const double r = std::hypot(f.as[f.i], f.as[f.k]);
     return {f.as[f.i] / r, -f.as[f.k] / r + 0.0};  // + 0.0: no −0
 }
-double phi_deg_of(const Frame& f) { return rot::deg(std::atan2(-f.as[f.k] + 0.0, f.as[f.i])); }
+double phi_deg_of(const Frame& f) {
+    return rot::deg(std::atan2(-f.as[f.k] + 0.0, f.as[f.i]));
+}
 
 // γ: the angle of c = (r, a_j, 0) with axis i; cos γ = r / |a|, sin γ = a_j / |a|.
 CosSin gamma_of(const Frame& f) {
@@ -62,7 +63,9 @@ double gamma_deg_of(const Frame& f) {
     return rot::deg(std::atan2(f.as[f.j], std::hypot(f.as[f.i], f.as[f.k])));
 }
 
-std::string comp(int axis) { return std::string("a_") + axis_name(axis); }
+std::string comp(int axis) {
+    return std::string("a_") + axis_name(axis);
+}
 std::string plane_name(int a, int b) {
     return std::string(1, axis_name(std::min(a, b))) + axis_name(std::max(a, b));
 }
@@ -112,8 +115,9 @@ const Spec& ArbitraryAxis::spec() {
 void ArbitraryAxis::validate(const Input& in) {
     for (int c = 0; c < 3; ++c) check_finite(in.axis[c], "axis[" + std::to_string(c) + "]");
     if (in.axis == dvec3(0))
-        throw InputError("axis", "must not be the zero vector (0, 0, 0): a rotation axis needs a "
-                                 "direction");
+        throw InputError("axis",
+                         "must not be the zero vector (0, 0, 0): a rotation axis needs a "
+                         "direction");
     const Frame f = choose(in.axis);
     if (!std::isfinite(f.scale * glm::length(f.as)))
         throw InputError("axis", "is too long: its length " + num(in.axis) +
@@ -192,19 +196,30 @@ void ArbitraryAxis::advance(State& s) {
 
 // ---- [narrate] ------------------------------------------------------------------------------
 
-double ArbitraryAxis::length(const State& s) { return s.scale * glm::length(s.as); }
-dvec3 ArbitraryAxis::unit(const State& s) { return s.as / glm::length(s.as); }
+double ArbitraryAxis::length(const State& s) {
+    return s.scale * glm::length(s.as);
+}
+dvec3 ArbitraryAxis::unit(const State& s) {
+    return s.as / glm::length(s.as);
+}
 
 dmat3 ArbitraryAxis::applied(const State& s) {
     if (s.phase == Phase::Choose) return dmat3(1.0);
     switch (s.last) {
-        case Phase::Choose: return dmat3(1.0);
-        case Phase::ToPlane: return s.to_plane;
-        case Phase::ToAxis: return s.to_axis * s.to_plane;
-        case Phase::Rotate: return s.spin * s.to_axis * s.to_plane;
-        case Phase::UndoAxis: return s.undo_axis * s.spin * s.to_axis * s.to_plane;
-        case Phase::UndoPlane: return s.undo_plane * s.undo_axis * s.spin * s.to_axis * s.to_plane;
-        default: return s.R;
+        case Phase::Choose:
+            return dmat3(1.0);
+        case Phase::ToPlane:
+            return s.to_plane;
+        case Phase::ToAxis:
+            return s.to_axis * s.to_plane;
+        case Phase::Rotate:
+            return s.spin * s.to_axis * s.to_plane;
+        case Phase::UndoAxis:
+            return s.undo_axis * s.spin * s.to_axis * s.to_plane;
+        case Phase::UndoPlane:
+            return s.undo_plane * s.undo_axis * s.spin * s.to_axis * s.to_plane;
+        default:
+            return s.R;
     }
 }
 
@@ -212,10 +227,16 @@ namespace {
 
 using State = ArbitraryAxis::State;
 
-dvec3 c_of(const State& s) { return s.to_plane * s.in.axis; }              // R_j(−φ) a
-dvec3 d_of(const State& s) { return s.to_axis * (s.to_plane * s.in.axis); }  // |a| e_i
+dvec3 c_of(const State& s) {
+    return s.to_plane * s.in.axis;
+}  // R_j(−φ) a
+dvec3 d_of(const State& s) {
+    return s.to_axis * (s.to_plane * s.in.axis);
+}  // |a| e_i
 
-std::string deg_text(double d) { return num(d, 6) + "°"; }
+std::string deg_text(double d) {
+    return num(d, 6) + "°";
+}
 
 void narrate_choose(const State& s, StepInfo& info) {
     const dvec3 a = s.in.axis;
@@ -231,23 +252,22 @@ void narrate_choose(const State& s, StepInfo& info) {
                "a's components, so a and a/|a| = " +
                    num(ArbitraryAxis::unit(s), 4) + " give the same matrix)";
     t += ". The largest component is |" + comp(s.i) + "| = " + num(m[s.i]) +
-         (tie ? " (a tie, which goes to the earlier axis)" : "") + ", so a is closest to the " +
-         I + " axis: turn it about " + J + " into the " + plane_name(s.i, s.j) +
-         " plane, then about " + K + " onto " + I + ", rotate about " + I +
-         " and turn back: R = R_" + J + "(φ) R_" + K + "(γ) R_" + I + "(θ) R_" + K + "(−γ) R_" +
-         J + "(−φ).";
+         (tie ? " (a tie, which goes to the earlier axis)" : "") + ", so a is closest to the " + I +
+         " axis: turn it about " + J + " into the " + plane_name(s.i, s.j) + " plane, then about " +
+         K + " onto " + I + ", rotate about " + I + " and turn back: R = R_" + J + "(φ) R_" + K +
+         "(γ) R_" + I + "(θ) R_" + K + "(−γ) R_" + J + "(−φ).";
     if (zeros == 2)
         t += std::string(" a already lies on the ") + I + " axis" +
-             (a[s.i] < 0 ? " but points the negative way, so the first turn is a half turn." :
-                           ", so both turns will be the identity.");
+             (a[s.i] < 0 ? " but points the negative way, so the first turn is a half turn."
+                         : ", so both turns will be the identity.");
     else if (zeros == 1)
         t += " a lies in a coordinate plane, so one of the two turns may be the identity.";
     info.event = "choose-axis";
     info.line = kLineChoose;
     info.narration = t;
-    info.math = "a = " + tex(a) + ",\\; |a| = " + tex(ArbitraryAxis::length(s), 6) + ",\\; i = " + I +
-                ":\\; R(\\theta, a) = R_" + J + "(\\phi)\\, R_" + K + "(\\gamma)\\, R_" + I +
-                "(\\theta)\\, R_" + K + "(-\\gamma)\\, R_" + J + "(-\\phi)";
+    info.math = "a = " + tex(a) + ",\\; |a| = " + tex(ArbitraryAxis::length(s), 6) +
+                ",\\; i = " + I + ":\\; R(\\theta, a) = R_" + J + "(\\phi)\\, R_" + K +
+                "(\\gamma)\\, R_" + I + "(\\theta)\\, R_" + K + "(-\\gamma)\\, R_" + J + "(-\\phi)";
 }
 
 void narrate_to_plane(const State& s, StepInfo& info) {
@@ -264,19 +284,19 @@ void narrate_to_plane(const State& s, StepInfo& info) {
         info.event = "to-plane";
         info.narration = "Project a onto the " + plane_name(s.i, s.k) + " plane: b has " + ai +
                          " = " + num(a[s.i]) + " and " + ak + " = " + num(a[s.k]) +
-                         ", length r = " + num(r, 4) + ". cos φ = " + ai + "/r = " +
-                         num(s.phi.c, 4) + ", sin φ = −" + ak + "/r = " + num(s.phi.s, 4) +
-                         ", so φ = " + deg_text(s.phi_deg) + ". R_" + J + "(−φ) = " + M +
-                         " turns a about " + J + " into the " + plane + " plane: c = R_" + J +
-                         "(−φ) a = " + num(c_of(s), 4) + ".";
+                         ", length r = " + num(r, 4) + ". cos φ = " + ai +
+                         "/r = " + num(s.phi.c, 4) + ", sin φ = −" + ak +
+                         "/r = " + num(s.phi.s, 4) + ", so φ = " + deg_text(s.phi_deg) + ". R_" +
+                         J + "(−φ) = " + M + " turns a about " + J + " into the " + plane +
+                         " plane: c = R_" + J + "(−φ) a = " + num(c_of(s), 4) + ".";
     }
     info.line = kLineToPlane;
-    info.math = "\\cos\\phi = \\frac{" + ai + "}{\\sqrt{" + ai + "^2 + " + ak + "^2}} = " +
-                tex(s.phi.c, 4) + ",\\; \\sin\\phi = \\frac{-" + ak + "}{\\sqrt{" + ai + "^2 + " +
-                ak + "^2}} = " + tex(rot::clean(s.phi.s), 4) + ",\\; \\phi = " +
-                tex(s.phi_deg, 6) + "^\\circ,\\; c = R_" + J + "(-\\phi)\\, a = " +
-                rot::matrix_tex(s.to_plane, true) + rot::vector_tex(a) + " = " +
-                rot::vector_tex(c_of(s));
+    info.math = "\\cos\\phi = \\frac{" + ai + "}{\\sqrt{" + ai + "^2 + " + ak +
+                "^2}} = " + tex(s.phi.c, 4) + ",\\; \\sin\\phi = \\frac{-" + ak + "}{\\sqrt{" + ai +
+                "^2 + " + ak + "^2}} = " + tex(rot::clean(s.phi.s), 4) +
+                ",\\; \\phi = " + tex(s.phi_deg, 6) + "^\\circ,\\; c = R_" + J +
+                "(-\\phi)\\, a = " + rot::matrix_tex(s.to_plane, true) + rot::vector_tex(a) +
+                " = " + rot::vector_tex(c_of(s));
 }
 
 void narrate_to_axis(const State& s, StepInfo& info) {
@@ -289,31 +309,32 @@ void narrate_to_axis(const State& s, StepInfo& info) {
                          " axis (" + aj + " = 0): γ = 0°, R_" + K + "(−γ) = I.";
     } else {
         info.event = "to-axis";
-        info.narration = "In the " + plane + " plane c = " + num(c_of(s), 4) + " makes the angle γ with the " +
-                         I + " axis: cos γ = r/|a| = " + num(s.gamma.c, 4) + ", sin γ = " + aj +
-                         "/|a| = " + num(s.gamma.s, 4) + ", γ = " + deg_text(s.gamma_deg) +
-                         ". R_" + K + "(−γ) = " + M + " turns c about " + K + " onto the " + I +
+        info.narration = "In the " + plane + " plane c = " + num(c_of(s), 4) +
+                         " makes the angle γ with the " + I +
+                         " axis: cos γ = r/|a| = " + num(s.gamma.c, 4) + ", sin γ = " + aj +
+                         "/|a| = " + num(s.gamma.s, 4) + ", γ = " + deg_text(s.gamma_deg) + ". R_" +
+                         K + "(−γ) = " + M + " turns c about " + K + " onto the " + I +
                          " axis: R_" + K + "(−γ) c = " + num(d_of(s), 4) + " = |a| e_" + I + ".";
     }
     info.line = kLineToAxis;
     info.math = "\\cos\\gamma = \\frac{\\sqrt{a_" + std::string(1, I) + "^2 + a_" +
                 std::string(1, axis_name(s.k)) + "^2}}{|a|} = " + tex(s.gamma.c, 4) +
                 ",\\; \\sin\\gamma = \\frac{" + aj + "}{|a|} = " + tex(rot::clean(s.gamma.s), 4) +
-                ",\\; \\gamma = " + tex(s.gamma_deg, 6) + "^\\circ,\\; R_" + K + "(-\\gamma)\\, c = " +
-                rot::matrix_tex(s.to_axis, true) + rot::vector_tex(c_of(s)) + " = " +
-                rot::vector_tex(d_of(s));
+                ",\\; \\gamma = " + tex(s.gamma_deg, 6) + "^\\circ,\\; R_" + K +
+                "(-\\gamma)\\, c = " + rot::matrix_tex(s.to_axis, true) + rot::vector_tex(c_of(s)) +
+                " = " + rot::vector_tex(d_of(s));
 }
 
 void narrate_rotate(const State& s, StepInfo& info) {
     const char I = axis_name(s.i);
     info.event = "rotate";
     info.line = kLineRotate;
-    info.narration = std::string("The axis now is the ") + I + " axis: rotate by θ = " +
-                     deg_text(s.in.angle_deg) + " about it (cos θ = " + num(s.theta.c, 4) +
-                     ", sin θ = " + num(s.theta.s, 4) + "): R_" + I + "(θ) = " +
-                     rot::matrix_text(s.spin) + ".";
-    info.math = std::string("R_") + I + "(" + tex(s.in.angle_deg) + "^\\circ) = " +
-                rot::matrix_tex(s.spin, true);
+    info.narration = std::string("The axis now is the ") + I +
+                     " axis: rotate by θ = " + deg_text(s.in.angle_deg) +
+                     " about it (cos θ = " + num(s.theta.c, 4) + ", sin θ = " + num(s.theta.s, 4) +
+                     "): R_" + I + "(θ) = " + rot::matrix_text(s.spin) + ".";
+    info.math = std::string("R_") + I + "(" + tex(s.in.angle_deg) +
+                "^\\circ) = " + rot::matrix_tex(s.spin, true);
 }
 
 void narrate_undo(const State& s, StepInfo& info, bool axis) {
@@ -325,13 +346,14 @@ void narrate_undo(const State& s, StepInfo& info, bool axis) {
     info.event = axis ? "undo-axis" : "undo-plane";
     info.line = axis ? kLineUndoAxis : kLineUndoPlane;
     info.narration = std::string("Undo the ") + (axis ? "second" : "first") + " turn: R_" + A +
-                     "(" + angle + ") = " + rot::matrix_text(m) + ", the inverse (the transpose) of R_" +
-                     A + "(−" + angle + "), " + angle + " = " + deg_text(value) +
-                     (axis ? ": the axis goes back into the " + plane_name(s.i, s.j) + " plane." :
-                             ": the axis is back where it started, and everything else has turned "
+                     "(" + angle + ") = " + rot::matrix_text(m) +
+                     ", the inverse (the transpose) of R_" + A + "(−" + angle + "), " + angle +
+                     " = " + deg_text(value) +
+                     (axis ? ": the axis goes back into the " + plane_name(s.i, s.j) + " plane."
+                           : ": the axis is back where it started, and everything else has turned "
                              "by θ about it.");
-    info.math = std::string("R_") + A + (axis ? "(\\gamma)" : "(\\phi)") + " = " +
-                rot::matrix_tex(m, true);
+    info.math =
+        std::string("R_") + A + (axis ? "(\\gamma)" : "(\\phi)") + " = " + rot::matrix_tex(m, true);
 }
 
 void narrate_compose(const State& s, StepInfo& info) {
@@ -345,10 +367,10 @@ void narrate_compose(const State& s, StepInfo& info) {
                      "Check: R leaves the axis alone, R a/|a| = " +
                      num(Ra, 4) + ".";
     info.math = std::string("R = ") + "R_" + J + "(\\phi) R_" + K + "(\\gamma) R_" + I +
-                "(\\theta) R_" + K + "(-\\gamma) R_" + J + "(-\\phi) = " +
-                rot::matrix_tex(s.undo_plane) + rot::matrix_tex(s.undo_axis) +
-                rot::matrix_tex(s.spin) + rot::matrix_tex(s.to_axis) +
-                rot::matrix_tex(s.to_plane) + " = " + rot::matrix_tex(s.R, true);
+                "(\\theta) R_" + K + "(-\\gamma) R_" + J +
+                "(-\\phi) = " + rot::matrix_tex(s.undo_plane) + rot::matrix_tex(s.undo_axis) +
+                rot::matrix_tex(s.spin) + rot::matrix_tex(s.to_axis) + rot::matrix_tex(s.to_plane) +
+                " = " + rot::matrix_tex(s.R, true);
 }
 
 void narrate_point(const State& s, StepInfo& info) {
@@ -358,8 +380,8 @@ void narrate_point(const State& s, StepInfo& info) {
     info.line = kLinePoint;
     info.narration = name + " = " + num(p) + ": " + name + "′ = R " + name + " = " + num(q, 4) +
                      " (its distance from the axis, and from the origin, is unchanged: |" + name +
-                     "| = " + num(glm::length(p), 4) + ", |" + name + "′| = " +
-                     num(glm::length(q), 4) + ").";
+                     "| = " + num(glm::length(p), 4) + ", |" + name +
+                     "′| = " + num(glm::length(q), 4) + ").";
     info.math = "R " + rot::vector_tex(p) + " = " + rot::vector_tex(q);
 }
 
@@ -378,7 +400,8 @@ void fill_vars(const State& s, StepInfo& info) {
         info.vars.push_back({"gamma_deg", s.gamma_deg});
         info.vars.push_back({std::string("R_") + K + "(-gamma)", rot::rows4(s.to_axis)});
     }
-    if (s.last >= Phase::Rotate) info.vars.push_back({std::string("R_") + I + "(theta)", rot::rows4(s.spin)});
+    if (s.last >= Phase::Rotate)
+        info.vars.push_back({std::string("R_") + I + "(theta)", rot::rows4(s.spin)});
     if (s.last >= Phase::UndoAxis)
         info.vars.push_back({std::string("R_") + K + "(gamma)", rot::rows4(s.undo_axis)});
     if (s.last >= Phase::UndoPlane)
@@ -396,15 +419,31 @@ void fill_vars(const State& s, StepInfo& info) {
 void ArbitraryAxis::narrate(const State& s, StepInfo& info) {
     info.math.clear();
     switch (s.last) {
-        case Phase::Choose: narrate_choose(s, info); break;
-        case Phase::ToPlane: narrate_to_plane(s, info); break;
-        case Phase::ToAxis: narrate_to_axis(s, info); break;
-        case Phase::Rotate: narrate_rotate(s, info); break;
-        case Phase::UndoAxis: narrate_undo(s, info, true); break;
-        case Phase::UndoPlane: narrate_undo(s, info, false); break;
+        case Phase::Choose:
+            narrate_choose(s, info);
+            break;
+        case Phase::ToPlane:
+            narrate_to_plane(s, info);
+            break;
+        case Phase::ToAxis:
+            narrate_to_axis(s, info);
+            break;
+        case Phase::Rotate:
+            narrate_rotate(s, info);
+            break;
+        case Phase::UndoAxis:
+            narrate_undo(s, info, true);
+            break;
+        case Phase::UndoPlane:
+            narrate_undo(s, info, false);
+            break;
         case Phase::Compose:
-        case Phase::Done: narrate_compose(s, info); break;
-        case Phase::Points: narrate_point(s, info); break;
+        case Phase::Done:
+            narrate_compose(s, info);
+            break;
+        case Phase::Points:
+            narrate_point(s, info);
+            break;
     }
     fill_vars(s, info);
 }
@@ -461,9 +500,10 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
     const Style axis_style{Role::Active, 3.0f};
     const Style construction{Role::Construction, 1.0f, true};
     scene.segments3.push_back({-L * now, L * now, "", axis_style, true});
-    scene.labels3.push_back({L * now, moved && s.phase != Phase::Done && s.last < Phase::Compose
-                                          ? "a (turned)"
-                                          : "a = " + num(s.in.axis, 4),
+    scene.labels3.push_back({L * now,
+                             moved && s.phase != Phase::Done && s.last < Phase::Compose
+                                 ? "a (turned)"
+                                 : "a = " + num(s.in.axis, 4),
                              {Role::Active}});
     if (moved) {
         scene.segments3.push_back({-L * unit, L * unit, "", construction, true});
@@ -527,7 +567,8 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
                               "θ = " + num(s.in.angle_deg, 4) + "° about a");
                 break;
             }
-            case Phase::Choose: break;
+            case Phase::Choose:
+                break;
         }
 
     for (int p = 0; p < static_cast<int>(s.in.points.size()); ++p) {

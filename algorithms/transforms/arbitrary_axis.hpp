@@ -26,12 +26,11 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-#include <vector>
-
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
@@ -47,10 +46,10 @@ struct ArbitraryAxis {
         bool operator==(const Input&) const = default;
     };
     struct Result {
-        glm::dmat3 matrix{1.0};    // R (the JSON shows its 4×4 homogeneous form)
-        double phi_deg = 0;        // φ, (−180, 180]
-        double gamma_deg = 0;      // γ, [−90, 90]
-        int canonical = 0;         // i: 0 = x, 1 = y, 2 = z
+        glm::dmat3 matrix{1.0};          // R (the JSON shows its 4×4 homogeneous form)
+        double phi_deg = 0;              // φ, (−180, 180]
+        double gamma_deg = 0;            // γ, [−90, 90]
+        int canonical = 0;               // i: 0 = x, 1 = y, 2 = z
         std::vector<glm::dvec3> points;  // R P for each input point
         bool operator==(const Result&) const = default;
     };
@@ -101,11 +100,11 @@ struct ArbitraryAxis {
     static Result rotate(const Input& in);
 
     // For the narration and the picture (computed there, not while stepping):
-    static double length(const State& s);         // |a|
-    static glm::dvec3 unit(const State& s);       // a / |a|
-    static glm::dmat3 applied(const State& s);    // the product of the matrices applied so far
+    static double length(const State& s);       // |a|
+    static glm::dvec3 unit(const State& s);     // a / |a|
+    static glm::dmat3 applied(const State& s);  // the product of the matrices applied so far
 
-private:
+  private:
     static void advance(State& s);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
 };

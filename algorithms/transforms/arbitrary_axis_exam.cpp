@@ -9,9 +9,9 @@
 namespace cg {
 
 ArbitraryAxis::Input ArbitraryAxis::exam_input(Rng& rng) {
-    static constexpr double kAxes[][3] = {
-        {1, 1, 0}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 2, 2}, {2, 1, 2}, {2, 2, 1},
-        {0, 0, 1}, {1, 0, 0}, {0, 2, 0}, {3, 4, 0}, {0, 3, 4}, {1, 1, 2}, {2, 1, 0}};
+    static constexpr double kAxes[][3] = {{1, 1, 0}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 2, 2},
+                                          {2, 1, 2}, {2, 2, 1}, {0, 0, 1}, {1, 0, 0}, {0, 2, 0},
+                                          {3, 4, 0}, {0, 3, 4}, {1, 1, 2}, {2, 1, 0}};
     static constexpr double kAngles[] = {30, 45, 60, 90, 90, 90, 120, 180, 270, -90};
     Input in;
     const auto& a = kAxes[rng.integer(0, std::size(kAxes) - 1)];

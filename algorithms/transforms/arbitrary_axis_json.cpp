@@ -45,6 +45,8 @@ struct JsonIo<ArbitraryAxis> {
     }
 };
 
-Algorithm arbitrary_axis_algorithm() { return make_algorithm<ArbitraryAxis>(); }
+Algorithm arbitrary_axis_algorithm() {
+    return make_algorithm<ArbitraryAxis>();
+}
 
 }  // namespace cg

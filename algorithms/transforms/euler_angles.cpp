@@ -2,7 +2,6 @@
 #include "transforms/euler_angles.hpp"
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
@@ -19,8 +18,12 @@ using Phase = EulerAngles::Phase;
 
 enum Line { kLineRoll = 1, kLineCompose, kLineLockTest, kLineLock };
 
-int axis_of(const std::string& order, int n) { return order[n] - 'x'; }
-dvec3 unit_axis(int a) { return dvec3(a == 0, a == 1, a == 2); }
+int axis_of(const std::string& order, int n) {
+    return order[n] - 'x';
+}
+dvec3 unit_axis(int a) {
+    return dvec3(a == 0, a == 1, a == 2);
+}
 
 struct Lock {
     bool locked;
@@ -39,7 +42,9 @@ dvec3 demo_angles(dvec3 angles, int sign) {
     return {angles[0] + EulerAngles::kDemoDeg, angles[1], angles[2] - sign * EulerAngles::kDemoDeg};
 }
 
-std::string theta(int n) { return std::string("θ") + char('1' + n); }
+std::string theta(int n) {
+    return std::string("θ") + char('1' + n);
+}
 std::string roll_name(const std::string& order, int n) {
     return std::string("R_") + order[n] + "(" + theta(n) + ")";
 }
@@ -73,9 +78,11 @@ const Spec& EulerAngles::spec() {
 
 void EulerAngles::validate(const Input& in) {
     if (!rot::valid_order(in.order))
-        throw InputError("order", "must name the three axes once each in the order the rolls are "
-                                  "applied: \"xyz\", \"xzy\", \"yxz\", \"yzx\", \"zxy\" or \"zyx\" "
-                                  "(got \"" + in.order + "\")");
+        throw InputError("order",
+                         "must name the three axes once each in the order the rolls are "
+                         "applied: \"xyz\", \"xzy\", \"yxz\", \"yzx\", \"zxy\" or \"zyx\" "
+                         "(got \"" +
+                             in.order + "\")");
     for (int n = 0; n < 3; ++n)
         if (!std::isfinite(in.angles_deg[n]))
             throw InputError("angles_deg[" + std::to_string(n) + "]",
@@ -96,7 +103,8 @@ void EulerAngles::advance(State& s) {
     switch (s.phase) {
         case Phase::Roll:  // One roll, applied after those before it
             ++s.k;
-            s.R = rot::rotation(axis_of(s.in.order, s.k), rot::cos_sin_deg(s.in.angles_deg[s.k])) * s.R;
+            s.R = rot::rotation(axis_of(s.in.order, s.k), rot::cos_sin_deg(s.in.angles_deg[s.k])) *
+                  s.R;
             if (s.k == 2) s.phase = Phase::Compose;
             return;
         case Phase::Compose:  // R = R_c(θ3) R_b(θ2) R_a(θ1), already multiplied: say so
@@ -121,7 +129,9 @@ namespace {
 
 using State = EulerAngles::State;
 
-std::string deg_text(double d) { return num(d, 6) + "°"; }
+std::string deg_text(double d) {
+    return num(d, 6) + "°";
+}
 
 dmat3 roll(const State& s, int n) {
     return rot::rotation(axis_of(s.in.order, n), rot::cos_sin_deg(s.in.angles_deg[n]));
@@ -144,8 +154,8 @@ void narrate_roll(const State& s, StepInfo& info) {
         t += " = " + rot::matrix_text(s.R);
     }
     info.narration = t + ".";
-    info.math = std::string("R_") + o[n] + "(" + tex(s.in.angles_deg[n]) + "^\\circ) = " +
-                rot::matrix_tex(roll(s, n));
+    info.math = std::string("R_") + o[n] + "(" + tex(s.in.angles_deg[n]) +
+                "^\\circ) = " + rot::matrix_tex(roll(s, n));
     if (n > 0) info.math += ",\\quad \\text{so far: } " + rot::matrix_tex(s.R);
 }
 
@@ -155,7 +165,8 @@ void narrate_compose(const State& s, StepInfo& info) {
     info.line = kLineCompose;
     info.narration = "Order \"" + o + "\": " + o[0] + " first, then " + o[1] + ", then " + o[2] +
                      ", so R = " + roll_name(o, 2) + " " + roll_name(o, 1) + " " + roll_name(o, 0) +
-                     " = " + rot::matrix_text(s.R) + ". Its columns are where the x, y and z axes go.";
+                     " = " + rot::matrix_text(s.R) +
+                     ". Its columns are where the x, y and z axes go.";
     info.math = std::string("R = R_") + o[2] + "(\\theta_3) R_" + o[1] + "(\\theta_2) R_" + o[0] +
                 "(\\theta_1) = " + rot::matrix_tex(roll(s, 2)) + rot::matrix_tex(roll(s, 1)) +
                 rot::matrix_tex(roll(s, 0)) + " = " + rot::matrix_tex(s.R);
@@ -173,16 +184,17 @@ void narrate_gimbal(const State& s, StepInfo& info) {
     const dmat3 changed = changed_matrix(s);
     const double change = rot::max_diff(changed, s.R);
     const std::string sgn = s.sign > 0 ? "+" : "−";
-    const std::string angles = "(" + num(b[0], 6) + "°, " + num(b[1], 6) + "°, " + num(b[2], 6) + "°)";
+    const std::string angles =
+        "(" + num(b[0], 6) + "°, " + num(b[1], 6) + "°, " + num(b[2], 6) + "°)";
     info.line = s.lock ? kLineLock : kLineLockTest;
     if (s.lock) {
         info.event = "gimbal-lock";
         info.narration = std::string("Gimbal lock: θ2 = ") + deg_text(a[1]) + ", so R_" + o[1] +
                          "(θ2) turns the " + o[0] + " axis onto " + (s.sign > 0 ? "+" : "−") +
-                         o[2] + ". The first roll (about " + o[0] + ") and the last (about " + o[2] +
-                         ") now turn about the same line: R = R_" + o[2] + "(θ3 " + sgn +
-                         " θ1) R_" + o[1] + "(θ2), and only θ3 " + sgn + " θ1 = " +
-                         deg_text(rot::wrap_deg(a[2] + s.sign * a[0])) +
+                         o[2] + ". The first roll (about " + o[0] + ") and the last (about " +
+                         o[2] + ") now turn about the same line: R = R_" + o[2] + "(θ3 " + sgn +
+                         " θ1) R_" + o[1] + "(θ2), and only θ3 " + sgn +
+                         " θ1 = " + deg_text(rot::wrap_deg(a[2] + s.sign * a[0])) +
                          " matters. One degree of freedom is gone: the angles " + angles +
                          " (θ1 + 30°, θ3 " + (s.sign > 0 ? "−" : "+") +
                          " 30°) give the same matrix (largest difference " + num(change, 3) +
@@ -194,14 +206,16 @@ void narrate_gimbal(const State& s, StepInfo& info) {
                     tex(b[2]) + "^\\circ) = " + rot::matrix_tex(changed) + " = R";
     } else {
         info.event = "no-lock";
-        info.narration = "cos θ2 = " + num(s.cos_mid, 4) + " ≠ 0: the three roll axes are "
+        info.narration = "cos θ2 = " + num(s.cos_mid, 4) +
+                         " ≠ 0: the three roll axes are "
                          "independent and the angles are (locally) unique. Changing θ1 by +30° "
-                         "and θ3 by " + (s.sign > 0 ? "−" : "+") + "30°, to " + angles +
-                         ", gives a different matrix (entries change by up to " +
-                         num(change, 4) + "). At θ2 = ±90° that change would do nothing.";
+                         "and θ3 by " +
+                         (s.sign > 0 ? "−" : "+") + "30°, to " + angles +
+                         ", gives a different matrix (entries change by up to " + num(change, 4) +
+                         "). At θ2 = ±90° that change would do nothing.";
         info.math = "\\cos\\theta_2 = " + tex(s.cos_mid, 4) + " \\ne 0,\\; R(" + tex(b[0]) +
-                    "^\\circ, " + tex(b[1]) + "^\\circ, " + tex(b[2]) + "^\\circ) = " +
-                    rot::matrix_tex(changed) + " \\ne R";
+                    "^\\circ, " + tex(b[1]) + "^\\circ, " + tex(b[2]) +
+                    "^\\circ) = " + rot::matrix_tex(changed) + " \\ne R";
     }
 }
 
@@ -209,8 +223,8 @@ void fill_vars(const State& s, StepInfo& info) {
     const std::string& o = s.in.order;
     info.vars = {{"order", o}, {"angles_deg", vec(s.in.angles_deg)}};
     for (int n = 0; n <= std::min(s.k, 2); ++n)
-        info.vars.push_back({std::string("R_") + o[n] + "(theta" + char('1' + n) + ")",
-                             rot::rows3(roll(s, n))});
+        info.vars.push_back(
+            {std::string("R_") + o[n] + "(theta" + char('1' + n) + ")", rot::rows3(roll(s, n))});
     info.vars.push_back({"so far", rot::rows3(s.R)});
     if (s.last >= Phase::Compose) info.vars.push_back({"R", rot::rows3(s.R)});
     if (s.last >= Phase::Gimbal) {
@@ -227,10 +241,16 @@ void fill_vars(const State& s, StepInfo& info) {
 void EulerAngles::narrate(const State& s, StepInfo& info) {
     info.math.clear();
     switch (s.last) {
-        case Phase::Roll: narrate_roll(s, info); break;
-        case Phase::Compose: narrate_compose(s, info); break;
+        case Phase::Roll:
+            narrate_roll(s, info);
+            break;
+        case Phase::Compose:
+            narrate_compose(s, info);
+            break;
         case Phase::Gimbal:
-        case Phase::Done: narrate_gimbal(s, info); break;
+        case Phase::Done:
+            narrate_gimbal(s, info);
+            break;
     }
     fill_vars(s, info);
 }
@@ -283,8 +303,8 @@ void EulerAngles::draw(const State& s, Scene& scene) {
     if (s.last == Phase::Roll && s.k >= 0) {
         const int a = axis_of(o, s.k);
         const dvec3 e = unit_axis(a);
-        scene.segments3.push_back({-1.7 * e, 1.7 * e, std::string("roll about ") + o[s.k],
-                                   {Role::Active, 3.0f}, true});
+        scene.segments3.push_back(
+            {-1.7 * e, 1.7 * e, std::string("roll about ") + o[s.k], {Role::Active, 3.0f}, true});
         rot::draw_arc(scene, {0, 0, 0}, e, rot::perpendicular(e), 1.0, 0,
                       rot::wrap_deg(s.in.angles_deg[s.k]), {Role::Active, 2.0f}, true,
                       theta(s.k) + " = " + num(s.in.angles_deg[s.k], 4) + "°");
@@ -303,18 +323,20 @@ void EulerAngles::draw(const State& s, Scene& scene) {
     for (int n = 0; n < 3; ++n) {
         const bool red = locked && n != 1;
         const Role role = red ? Role::Discarded : roles[n];
-        const std::string name = std::string(n == 0 ? "inner" : n == 1 ? "middle" : "outer") +
+        const std::string name = std::string(n == 0   ? "inner"
+                                             : n == 1 ? "middle"
+                                                      : "outer") +
                                  " axis (" + theta(n) + ", " + o[n] + ")";
-        scene.segments3.push_back({-radius[n] * axes[n], (radius[n] + 0.3) * axes[n], "",
-                                   {role, 2.0f, false}, true});
+        scene.segments3.push_back(
+            {-radius[n] * axes[n], (radius[n] + 0.3) * axes[n], "", {role, 2.0f, false}, true});
         scene.labels3.push_back({(radius[n] + 0.35) * axes[n], name, {role}});
         rot::draw_circle(scene, {0, 0, 0}, axes[n], radius[n], {role, red ? 2.5f : 1.5f, !red});
     }
     if (locked)
-        scene.labels3.push_back({{0, -1.8, 0},
-                                 "gimbal lock: " + std::string(1, o[0]) + " and " + o[2] +
-                                     " rolls share one axis",
-                                 {Role::Discarded}});
+        scene.labels3.push_back(
+            {{0, -1.8, 0},
+             "gimbal lock: " + std::string(1, o[0]) + " and " + o[2] + " rolls share one axis",
+             {Role::Discarded}});
 }
 
 }  // namespace cg

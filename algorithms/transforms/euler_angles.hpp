@@ -20,11 +20,10 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-#include <vector>
-
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
@@ -34,18 +33,18 @@ namespace cg {
 
 struct EulerAngles {
     static constexpr double kLockCos = 1e-12;  // |cos θ2| below this counts as locked
-    static constexpr double kDemoDeg = 30;      // the change of θ1 and θ3 in the lock demo
+    static constexpr double kDemoDeg = 30;     // the change of θ1 and θ3 in the lock demo
 
     struct Input {
-        std::string order = "xyz";      // the axes in the order the rolls are applied
+        std::string order = "xyz";       // the axes in the order the rolls are applied
         glm::dvec3 angles_deg{0, 0, 0};  // θ1, θ2, θ3 for the letters of `order`, degrees
         bool operator==(const Input&) const = default;
     };
     struct Result {
         glm::dmat3 matrix{1.0};
         bool gimbal_lock = false;
-        int lock_sign = 0;             // s when locked (R depends on θ3 + sθ1 only), else 0
-        double lock_angle_deg = 0;     // θ3 + sθ1, wrapped to (−180, 180], when locked
+        int lock_sign = 0;          // s when locked (R depends on θ3 + sθ1 only), else 0
+        double lock_angle_deg = 0;  // θ3 + sθ1, wrapped to (−180, 180], when locked
         bool operator==(const Result&) const = default;
     };
 
@@ -55,11 +54,11 @@ struct EulerAngles {
         Input in;
         Phase phase = Phase::Roll;
         Phase last = Phase::Roll;
-        int k = -1;                       // the roll applied last (0, 1, 2)
-        glm::dmat3 R{1.0};                // the rolls applied so far, multiplied (all three: R)
+        int k = -1;         // the roll applied last (0, 1, 2)
+        glm::dmat3 R{1.0};  // the rolls applied so far, multiplied (all three: R)
         bool lock = false;
         int sign = 0;
-        double cos_mid = 1;               // cos θ2
+        double cos_mid = 1;  // cos θ2
         bool operator==(const State&) const = default;
     };
 
@@ -78,7 +77,7 @@ struct EulerAngles {
     // The matrix and the lock test as one straight-line function, for the benchmark.
     static Result compose(const Input& in);
 
-private:
+  private:
     static void advance(State& s);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
 };

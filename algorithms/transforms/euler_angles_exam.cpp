@@ -19,14 +19,17 @@ EulerAngles::Input EulerAngles::exam_input(Rng& rng) {
 std::string EulerAngles::question(const Input& in) {
     const std::string& o = in.order;
     return std::string("An object is rolled about the fixed world axes: first about ") + o[0] +
-           " by θ1 = " + num(in.angles_deg[0]) + "°, then about " + o[1] + " by θ2 = " +
-           num(in.angles_deg[1]) + "°, then about " + o[2] + " by θ3 = " + num(in.angles_deg[2]) +
+           " by θ1 = " + num(in.angles_deg[0]) + "°, then about " + o[1] +
+           " by θ2 = " + num(in.angles_deg[1]) + "°, then about " + o[2] +
+           " by θ3 = " + num(in.angles_deg[2]) +
            "° (right-handed, column vectors). Give the 3×3 rotation matrix R = R_" + o[2] +
            "(θ3) R_" + o[1] + "(θ2) R_" + o[0] +
            "(θ1) (matrix, rows), and say whether these angles are in gimbal lock (gimbal_lock: "
            "true or false).";
 }
 
-std::vector<std::string> EulerAngles::answer_fields() { return {"matrix", "gimbal_lock"}; }
+std::vector<std::string> EulerAngles::answer_fields() {
+    return {"matrix", "gimbal_lock"};
+}
 
 }  // namespace cg

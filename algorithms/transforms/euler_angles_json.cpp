@@ -38,6 +38,8 @@ struct JsonIo<EulerAngles> {
     }
 };
 
-Algorithm euler_angles_algorithm() { return make_algorithm<EulerAngles>(); }
+Algorithm euler_angles_algorithm() {
+    return make_algorithm<EulerAngles>();
+}
 
 }  // namespace cg

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-
 #include <glm/geometric.hpp>
+#include <numbers>
 
 #include "core/format.hpp"
 
@@ -13,8 +12,12 @@ namespace cg::rot {
 using glm::dmat3;
 using glm::dvec3;
 
-double deg(double radians) { return radians * (180.0 / std::numbers::pi); }
-double rad(double degrees) { return degrees * (std::numbers::pi / 180.0); }
+double deg(double radians) {
+    return radians * (180.0 / std::numbers::pi);
+}
+double rad(double degrees) {
+    return degrees * (std::numbers::pi / 180.0);
+}
 
 CosSin cos_sin_deg(double d) {
     double r = std::fmod(d, 360.0);  // exact
@@ -42,7 +45,9 @@ double wrap_deg(double d) {
     return r == 0 ? 0.0 : r;  // no −0
 }
 
-char axis_name(int axis) { return static_cast<char>('x' + axis); }
+char axis_name(int axis) {
+    return static_cast<char>('x' + axis);
+}
 
 dmat3 rotation(int axis, CosSin cs) {
     // R e_j = c e_j + s e_k, R e_k = −s e_j + c e_k with (i, j, k) a cyclic order of x, y, z.
@@ -66,7 +71,9 @@ std::vector<std::vector<double>> rows4(const dmat3& m) {
             {0, 0, 0, 1}};
 }
 
-double clean(double x) { return std::fabs(x) < 1e-15 ? 0.0 : x; }
+double clean(double x) {
+    return std::fabs(x) < 1e-15 ? 0.0 : x;
+}
 
 std::string matrix_text(const dmat3& m, int digits) {
     std::string t = "[";
@@ -165,8 +172,8 @@ std::vector<dvec3> house_points(const HousePlacement& h) {
     return out;
 }
 
-void draw_arc(Scene& scene, dvec3 centre, dvec3 normal, dvec3 start, double radius,
-              double from_deg, double to_deg, Style style, bool arrow, const std::string& label) {
+void draw_arc(Scene& scene, dvec3 centre, dvec3 normal, dvec3 start, double radius, double from_deg,
+              double to_deg, Style style, bool arrow, const std::string& label) {
     const dvec3 v = glm::cross(normal, start);
     const int n = std::max(2, static_cast<int>(std::ceil(std::fabs(to_deg - from_deg) / 7.5)));
     auto at = [&](double t) {
@@ -187,8 +194,8 @@ void draw_circle(Scene& scene, dvec3 centre, dvec3 normal, double radius, Style 
         const double a = 2 * std::numbers::pi * i / segments,
                      b = 2 * std::numbers::pi * (i + 1) / segments;
         scene.segments3.push_back({centre + radius * (std::cos(a) * u + std::sin(a) * v),
-                                   centre + radius * (std::cos(b) * u + std::sin(b) * v), "",
-                                   style, false});
+                                   centre + radius * (std::cos(b) * u + std::sin(b) * v), "", style,
+                                   false});
     }
 }
 

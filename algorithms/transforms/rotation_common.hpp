@@ -4,15 +4,15 @@
 //
 // Conventions (the project's): right-handed, column vectors p' = R p, a positive angle turns
 // counter-clockwise when seen from the axis tip looking toward the origin:
-//   R_x(θ) = [1 0 0; 0 c −s; 0 s c],  R_y(θ) = [c 0 s; 0 1 0; −s 0 c],  R_z(θ) = [c −s 0; s c 0; 0 0 1].
+//   R_x(θ) = [1 0 0; 0 c −s; 0 s c],  R_y(θ) = [c 0 s; 0 1 0; −s 0 c],  R_z(θ) = [c −s 0; s c 0; 0
+//   0 1].
 // glm matrices are indexed m[column][row]; every function here that says "rows" means rows.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 #include "core/scene.hpp"
 
@@ -34,7 +34,9 @@ double rad(double degrees);
 
 // The rotation about coordinate axis `axis` (0 = x, 1 = y, 2 = z) with the given cos and sin.
 glm::dmat3 rotation(int axis, CosSin cs);
-inline CosSin inverse(CosSin cs) { return {cs.c, -cs.s}; }
+inline CosSin inverse(CosSin cs) {
+    return {cs.c, -cs.s};
+}
 char axis_name(int axis);  // 'x', 'y', 'z'
 
 // Rows of a 3×3 matrix, or of its 4×4 homogeneous extension (last row and column 0 0 0 1).

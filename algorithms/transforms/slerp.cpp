@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
@@ -30,11 +29,21 @@ enum Line {
     kLineSample,
 };
 
-double dot4(const dquat& a, const dquat& b) { return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z; }
-double norm4(const dquat& q) { return std::sqrt(dot4(q, q)); }
-dquat scaled(const dquat& q, double f) { return {q.w * f, q.x * f, q.y * f, q.z * f}; }
-dquat sum(const dquat& a, const dquat& b) { return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z}; }
-dquat diff(const dquat& a, const dquat& b) { return {a.w - b.w, a.x - b.x, a.y - b.y, a.z - b.z}; }
+double dot4(const dquat& a, const dquat& b) {
+    return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
+}
+double norm4(const dquat& q) {
+    return std::sqrt(dot4(q, q));
+}
+dquat scaled(const dquat& q, double f) {
+    return {q.w * f, q.x * f, q.y * f, q.z * f};
+}
+dquat sum(const dquat& a, const dquat& b) {
+    return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
+}
+dquat diff(const dquat& a, const dquat& b) {
+    return {a.w - b.w, a.x - b.x, a.y - b.y, a.z - b.z};
+}
 double max_abs(const dquat& q) {
     return std::max({std::fabs(q.w), std::fabs(q.x), std::fabs(q.y), std::fabs(q.z)});
 }
@@ -82,7 +91,9 @@ std::string qtex(const dquat& q, int digits = 4) {
     return "(" + tex(rot::clean(q.w), digits) + ", " + tex(rot::clean(q.x), digits) + ", " +
            tex(rot::clean(q.y), digits) + ", " + tex(rot::clean(q.z), digits) + ")";
 }
-std::vector<double> qvec(const dquat& q) { return {q.w, q.x, q.y, q.z}; }
+std::vector<double> qvec(const dquat& q) {
+    return {q.w, q.x, q.y, q.z};
+}
 
 // "a turn by 90° about (0, 0, 1)" for a unit quaternion.
 std::string turn_text(const dquat& q) {
@@ -101,11 +112,13 @@ void check_quat(const dquat& q, const std::string& name) {
     const double c[4] = {q.w, q.x, q.y, q.z};
     for (int i = 0; i < 4; ++i) check_finite(c[i], name + "[" + std::to_string(i) + "]");
     if (max_abs(q) == 0)
-        throw InputError(name, "must not be the zero quaternion [0, 0, 0, 0]: it is no rotation "
-                               "and cannot be normalised");
+        throw InputError(name,
+                         "must not be the zero quaternion [0, 0, 0, 0]: it is no rotation "
+                         "and cannot be normalised");
     if (!std::isfinite(length(q)))
-        throw InputError(name, "is too large: its length overflows a double; scale it down (only "
-                               "its direction matters)");
+        throw InputError(name,
+                         "is too large: its length overflows a double; scale it down (only "
+                         "its direction matters)");
 }
 
 }  // namespace
@@ -255,9 +268,9 @@ using State = Slerp::State;
 void narrate_normalise(const State& s, StepInfo& info) {
     auto one = [](const char* name, const dquat& raw, double n, const dquat& q) {
         std::string t = std::string(name) + " = " + qtext(raw, 6);
-        t += std::fabs(n - 1) <= 1e-12 ? " is already unit length"
-                                       : " has length " + num(n, 6) + ", so " + name + " ← " +
-                                             qtext(q);
+        t += std::fabs(n - 1) <= 1e-12
+                 ? " is already unit length"
+                 : " has length " + num(n, 6) + ", so " + name + " ← " + qtext(q);
         return t + ": " + turn_text(q);
     };
     info.event = "normalise";
@@ -265,8 +278,8 @@ void narrate_normalise(const State& s, StepInfo& info) {
     info.narration = one("q0", s.in.q0, s.norm0, s.q0) + "; " + one("q1", s.in.q1, s.norm1, s.q1) +
                      ". (A unit quaternion (cos θ/2, sin θ/2 v̂) is the turn by θ about v̂.)";
     info.math = "q_0 = \\frac{" + qtex(s.in.q0, 6) + "}{" + tex(s.norm0, 6) + "} = " + qtex(s.q0) +
-                ",\\; q_1 = \\frac{" + qtex(s.in.q1, 6) + "}{" + tex(s.norm1, 6) + "} = " +
-                qtex(s.q1);
+                ",\\; q_1 = \\frac{" + qtex(s.in.q1, 6) + "}{" + tex(s.norm1, 6) +
+                "} = " + qtex(s.q1);
 }
 
 void narrate_dot(const State& s, StepInfo& info) {
@@ -277,29 +290,32 @@ void narrate_dot(const State& s, StepInfo& info) {
         info.line = kLineFlip;
         info.narration = "q0 · q1 = " + num(-s.cos_omega, 4) +
                          " < 0: going from q0 to q1 would take the long way round the sphere. −q1 "
-                         "is the same rotation, so q1 ← −q1 = " + qtext(s.q1) +
-                         " and cos ω = " + num(s.cos_omega, 4) + ". " + rel;
+                         "is the same rotation, so q1 ← −q1 = " +
+                         qtext(s.q1) + " and cos ω = " + num(s.cos_omega, 4) + ". " + rel;
     } else {
         info.event = "dot";
         info.line = kLineDot;
         info.narration = "cos ω = q0 · q1 = " + num(s.cos_omega, 4) +
                          " ≥ 0: the short way round already, no flip. " + rel;
     }
-    info.math = "\\cos\\omega = q_0 \\cdot q_1 = " + tex(s.cos_omega, 4) + ",\\; q_1 \\bar q_0 = " +
-                qtex(s.relative);
+    info.math = "\\cos\\omega = q_0 \\cdot q_1 = " + tex(s.cos_omega, 4) +
+                ",\\; q_1 \\bar q_0 = " + qtex(s.relative);
 }
 
 void narrate_angle(const State& s, StepInfo& info) {
     const double u = s.in.u;
     if (s.fallback) {
         info.event = "nearly-equal";
-        info.narration = "ω = " + num(rot::deg(s.omega), 4) + "°, sin ω = " + num(s.sin_omega, 4) +
-                         " < 10⁻⁶: q0 and q1 are (nearly) the same orientation and the slerp "
-                         "formula would divide by ≈ 0. Use the normalised linear blend: w0 = 1 − u = " +
-                         num(s.w0, 4) + ", w1 = u = " + num(s.w1, 4) + " (it differs from slerp "
-                         "by O(ω³)).";
-        info.math = "\\sin\\omega = " + tex(s.sin_omega, 4) + " \\approx 0:\\; w_0 = 1 - u = " +
-                    tex(s.w0, 4) + ",\\; w_1 = u = " + tex(s.w1, 4);
+        info.narration =
+            "ω = " + num(rot::deg(s.omega), 4) + "°, sin ω = " + num(s.sin_omega, 4) +
+            " < 10⁻⁶: q0 and q1 are (nearly) the same orientation and the slerp "
+            "formula would divide by ≈ 0. Use the normalised linear blend: w0 = 1 − u = " +
+            num(s.w0, 4) + ", w1 = u = " + num(s.w1, 4) +
+            " (it differs from slerp "
+            "by O(ω³)).";
+        info.math = "\\sin\\omega = " + tex(s.sin_omega, 4) +
+                    " \\approx 0:\\; w_0 = 1 - u = " + tex(s.w0, 4) +
+                    ",\\; w_1 = u = " + tex(s.w1, 4);
     } else {
         info.event = "angle";
         info.narration = "ω = arccos(" + num(s.cos_omega, 4) + ") = " + num(rot::deg(s.omega), 6) +
@@ -307,9 +323,10 @@ void narrate_angle(const State& s, StepInfo& info) {
                          "°), sin ω = " + num(s.sin_omega, 4) + ". At u = " + num(u, 4) +
                          ": w0 = sin((1−u)ω)/sin ω = " + num(s.w0, 4) +
                          ", w1 = sin(uω)/sin ω = " + num(s.w1, 4) + ".";
-        info.math = "\\omega = \\cos^{-1}(" + tex(s.cos_omega, 4) + ") = " +
-                    tex(rot::deg(s.omega), 6) + "^\\circ,\\; w_0 = \\frac{\\sin((1-u)\\omega)}{\\sin\\omega} = " +
-                    tex(s.w0, 4) + ",\\; w_1 = \\frac{\\sin(u\\omega)}{\\sin\\omega} = " + tex(s.w1, 4);
+        info.math =
+            "\\omega = \\cos^{-1}(" + tex(s.cos_omega, 4) + ") = " + tex(rot::deg(s.omega), 6) +
+            "^\\circ,\\; w_0 = \\frac{\\sin((1-u)\\omega)}{\\sin\\omega} = " + tex(s.w0, 4) +
+            ",\\; w_1 = \\frac{\\sin(u\\omega)}{\\sin\\omega} = " + tex(s.w1, 4);
     }
     info.line = kLineAngle;
 }
@@ -318,8 +335,8 @@ void narrate_blend(const State& s, StepInfo& info) {
     info.event = "blend";
     info.line = kLineBlend;
     info.narration = "q(" + num(s.in.u, 4) + ") = " + num(s.w0, 4) + " q0 + " + num(s.w1, 4) +
-                     " q1 = " + qtext(s.q) + (s.fallback ? " (normalised)" : "") + ", |q| = " +
-                     num(norm4(s.q), 6) + ": " + turn_text(s.q) + ".";
+                     " q1 = " + qtext(s.q) + (s.fallback ? " (normalised)" : "") +
+                     ", |q| = " + num(norm4(s.q), 6) + ": " + turn_text(s.q) + ".";
     info.math = "q(u) = " + tex(s.w0, 4) + "\\, " + qtex(s.q0) + " + " + tex(s.w1, 4) + "\\, " +
                 qtex(s.q1) + " = " + qtex(s.q);
 }
@@ -327,22 +344,25 @@ void narrate_blend(const State& s, StepInfo& info) {
 void narrate_rotate(const State& s, StepInfo& info) {
     info.event = "rotate-point";
     info.line = kLineRotate;
-    info.narration = "Rotate the x axis's tip P = (1, 0, 0) as the pure quaternion (0, P): q (0, P) = " +
-                     qtext(s.qp) + ", then times q̄ = " + qtext(Slerp::conjugate(s.q)) + " gives " +
-                     qtext(s.qpq) + ": P′ = " + num(dvec3(s.qpq.x, s.qpq.y, s.qpq.z), 4) +
-                     " (the scalar part is 0 again).";
-    info.math = "q\\,(0, \\hat x)\\,\\bar q = " + qtex(s.qp) + "\\, " + qtex(Slerp::conjugate(s.q)) +
-                " = " + qtex(s.qpq);
+    info.narration =
+        "Rotate the x axis's tip P = (1, 0, 0) as the pure quaternion (0, P): q (0, P) = " +
+        qtext(s.qp) + ", then times q̄ = " + qtext(Slerp::conjugate(s.q)) + " gives " +
+        qtext(s.qpq) + ": P′ = " + num(dvec3(s.qpq.x, s.qpq.y, s.qpq.z), 4) +
+        " (the scalar part is 0 again).";
+    info.math = "q\\,(0, \\hat x)\\,\\bar q = " + qtex(s.qp) + "\\, " +
+                qtex(Slerp::conjugate(s.q)) + " = " + qtex(s.qpq);
 }
 
 void narrate_matrix(const State& s, StepInfo& info) {
     info.event = "matrix";
     info.line = kLineMatrix;
-    info.narration = "As a matrix, q(u) = " + rot::matrix_text(s.matrix) +
-                     " (its first column is P′ above).";
-    info.math = "M = \\begin{bmatrix} 1 - 2(y^2 + z^2) & 2(xy - wz) & 2(xz + wy) \\\\ 2(xy + wz) & "
-                "1 - 2(x^2 + z^2) & 2(yz - wx) \\\\ 2(xz - wy) & 2(yz + wx) & 1 - 2(x^2 + y^2) "
-                "\\end{bmatrix} = " + rot::matrix_tex(s.matrix);
+    info.narration =
+        "As a matrix, q(u) = " + rot::matrix_text(s.matrix) + " (its first column is P′ above).";
+    info.math =
+        "M = \\begin{bmatrix} 1 - 2(y^2 + z^2) & 2(xy - wz) & 2(xz + wy) \\\\ 2(xy + wz) & "
+        "1 - 2(x^2 + z^2) & 2(yz - wx) \\\\ 2(xz - wy) & 2(yz + wx) & 1 - 2(x^2 + y^2) "
+        "\\end{bmatrix} = " +
+        rot::matrix_tex(s.matrix);
 }
 
 void narrate_sample(const State& s, StepInfo& info) {
@@ -350,24 +370,23 @@ void narrate_sample(const State& s, StepInfo& info) {
     auto clean = [](dvec3 v) { return dvec3(rot::clean(v.x), rot::clean(v.y), rot::clean(v.z)); };
     const dvec3 a = clean(s.tip_slerp[s.k]), b = clean(s.tip_matrix[s.k]),
                 c = clean(s.tip_euler[s.k]);
-    const double euler_off =
-        rot::deg(std::atan2(glm::length(glm::cross(a, c)), glm::dot(a, c)));
+    const double euler_off = rot::deg(std::atan2(glm::length(glm::cross(a, c)), glm::dot(a, c)));
     info.event = "sample";
     info.line = kLineSample;
     const std::string keys =
         s.k == 0 ? "For the comparison, q0 has Euler angles (x, y, z rolls, in that order) " +
                        num(s.e0, 4) + "° and q1 " + num(s.e1, 4) + "°. "
                  : "";
-    info.narration = keys + "u = " + num(u, 4) + ": the x axis's tip is at " + num(a, 4) +
-                     " under slerp; lerp of the matrices puts it at " + num(b, 4) +
-                     ", length " + num(glm::length(b), 4) +
-                     (glm::length(b) < 1 - 1e-9 ? " (inside the sphere: the blend is no rotation)"
-                                                : "") +
-                     "; lerp of the Euler angles at " + num(c, 4) + ", " + num(euler_off, 4) +
-                     "° away from slerp's.";
-    info.math = "u = " + tex(u, 4) + ":\\; |(1-u)M_0\\hat x + uM_1\\hat x| = " +
-                tex(glm::length(b), 4) + ",\\; \\angle(\\text{slerp}, \\text{Euler}) = " +
-                tex(euler_off, 4) + "^\\circ";
+    info.narration =
+        keys + "u = " + num(u, 4) + ": the x axis's tip is at " + num(a, 4) +
+        " under slerp; lerp of the matrices puts it at " + num(b, 4) + ", length " +
+        num(glm::length(b), 4) +
+        (glm::length(b) < 1 - 1e-9 ? " (inside the sphere: the blend is no rotation)" : "") +
+        "; lerp of the Euler angles at " + num(c, 4) + ", " + num(euler_off, 4) +
+        "° away from slerp's.";
+    info.math = "u = " + tex(u, 4) +
+                ":\\; |(1-u)M_0\\hat x + uM_1\\hat x| = " + tex(glm::length(b), 4) +
+                ",\\; \\angle(\\text{slerp}, \\text{Euler}) = " + tex(euler_off, 4) + "^\\circ";
 }
 
 void fill_vars(const State& s, StepInfo& info) {
@@ -398,14 +417,28 @@ void fill_vars(const State& s, StepInfo& info) {
 void Slerp::narrate(const State& s, StepInfo& info) {
     info.math.clear();
     switch (s.last) {
-        case Phase::Normalise: narrate_normalise(s, info); break;
-        case Phase::Dot: narrate_dot(s, info); break;
-        case Phase::Angle: narrate_angle(s, info); break;
-        case Phase::Blend: narrate_blend(s, info); break;
-        case Phase::RotatePoint: narrate_rotate(s, info); break;
-        case Phase::Matrix: narrate_matrix(s, info); break;
+        case Phase::Normalise:
+            narrate_normalise(s, info);
+            break;
+        case Phase::Dot:
+            narrate_dot(s, info);
+            break;
+        case Phase::Angle:
+            narrate_angle(s, info);
+            break;
+        case Phase::Blend:
+            narrate_blend(s, info);
+            break;
+        case Phase::RotatePoint:
+            narrate_rotate(s, info);
+            break;
+        case Phase::Matrix:
+            narrate_matrix(s, info);
+            break;
         case Phase::Sample:
-        case Phase::Done: narrate_sample(s, info); break;
+        case Phase::Done:
+            narrate_sample(s, info);
+            break;
     }
     fill_vars(s, info);
 }
@@ -481,8 +514,11 @@ void Slerp::draw(const State& s, Scene& scene) {
     path(s.tip_matrix, Role::Discarded, "lerp of matrices");
     path(s.tip_euler, Role::Leaving, "lerp of Euler angles");
     if (s.last == Phase::Sample && glm::length(s.tip_matrix.back()) > 1e-9)  // how far inside
-        scene.segments3.push_back({s.tip_matrix.back(), glm::normalize(s.tip_matrix.back()), "",
-                                   {Role::Construction, 1.0f, true}, false});
+        scene.segments3.push_back({s.tip_matrix.back(),
+                                   glm::normalize(s.tip_matrix.back()),
+                                   "",
+                                   {Role::Construction, 1.0f, true},
+                                   false});
 }
 
 }  // namespace cg

@@ -27,12 +27,11 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-#include <vector>
-
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
@@ -42,7 +41,7 @@ namespace cg {
 
 struct Slerp {
     static constexpr double kFallbackSin = 1e-6;  // below this sin ω: normalised linear blend
-    static constexpr int kSamples = 9;             // u = 0, 1/8, …, 1 for the paths
+    static constexpr int kSamples = 9;            // u = 0, 1/8, …, 1 for the paths
 
     struct Input {
         glm::dquat q0{1, 0, 0, 0};  // [w, x, y, z], any length ≠ 0
@@ -75,17 +74,17 @@ struct Slerp {
         Phase phase = Phase::Normalise;
         Phase last = Phase::Normalise;
         double norm0 = 1, norm1 = 1;
-        glm::dquat q0{1, 0, 0, 0}, q1{1, 0, 0, 0};  // unit; q1 after the flip
-        glm::dquat relative{1, 0, 0, 0};             // q1 q̄0
+        glm::dquat q0{1, 0, 0, 0}, q1{1, 0, 0, 0};       // unit; q1 after the flip
+        glm::dquat relative{1, 0, 0, 0};                 // q1 q̄0
         double cos_omega = 1, omega = 0, sin_omega = 0;  // ω in radians
         bool flipped = false, fallback = false;
         double w0 = 1, w1 = 0;  // the weights of q0 and q1
         glm::dquat q{1, 0, 0, 0};
         glm::dquat qp{0, 0, 0, 0}, qpq{0, 1, 0, 0};  // q (0, x̂) and q (0, x̂) q̄
         glm::dmat3 matrix{1.0};
-        glm::dmat3 m0{1.0}, m1{1.0};      // the two orientations as matrices (for the paths)
-        glm::dvec3 e0{0}, e1{0};          // ... and as Euler angles (order xyz, degrees)
-        int k = -1;                       // the sample taken last
+        glm::dmat3 m0{1.0}, m1{1.0};  // the two orientations as matrices (for the paths)
+        glm::dvec3 e0{0}, e1{0};      // ... and as Euler angles (order xyz, degrees)
+        int k = -1;                   // the sample taken last
         std::vector<glm::dvec3> tip_slerp, tip_matrix, tip_euler;  // x-axis tips per sample
         bool operator==(const State&) const = default;
     };
@@ -110,7 +109,7 @@ struct Slerp {
     static glm::dquat conjugate(const glm::dquat& q) { return {q.w, -q.x, -q.y, -q.z}; }
     static glm::dmat3 to_matrix(const glm::dquat& q);  // unit q
 
-private:
+  private:
     static void advance(State& s);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
 };

@@ -20,7 +20,9 @@ glm::dquat quat(const Reader& r, const char* key) {
     return {c[0], c[1], c[2], c[3]};  // glm's constructor takes (w, x, y, z)
 }
 
-json quat_json(const glm::dquat& q) { return json::array({q.w, q.x, q.y, q.z}); }
+json quat_json(const glm::dquat& q) {
+    return json::array({q.w, q.x, q.y, q.z});
+}
 json nice_quat(const glm::dquat& q) {
     return json::array({nice_number(q.w), nice_number(q.x), nice_number(q.y), nice_number(q.z)});
 }
@@ -57,6 +59,8 @@ struct JsonIo<Slerp> {
     }
 };
 
-Algorithm slerp_algorithm() { return make_algorithm<Slerp>(); }
+Algorithm slerp_algorithm() {
+    return make_algorithm<Slerp>();
+}
 
 }  // namespace cg

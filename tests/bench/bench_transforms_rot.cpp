@@ -4,7 +4,6 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_support.hpp"
-
 #include "core/rng.hpp"
 #include "io/registry.hpp"
 #include "transforms/arbitrary_axis.hpp"
@@ -65,8 +64,10 @@ const std::vector<cg::Slerp::Input>& pairs() {
         cg::Rng rng(42);
         std::vector<cg::Slerp::Input> v(100'000);
         for (auto& in : v) {
-            in.q0 = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
-            in.q1 = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+            in.q0 = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1),
+                     rng.uniform(-1, 1)};
+            in.q1 = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1),
+                     rng.uniform(-1, 1)};
             in.u = rng.uniform(0, 1);
         }
         return v;
@@ -119,7 +120,9 @@ void BM_Slerp_StateMachineWithPaths(benchmark::State& state) {
 }
 BENCHMARK(BM_Slerp_StateMachineWithPaths)->Unit(benchmark::kMillisecond);
 
-void BM_Slerp_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "slerp"); }
+void BM_Slerp_StepAndPicture(benchmark::State& state) {
+    cg::bench::step_and_picture(state, "slerp");
+}
 BENCHMARK(BM_Slerp_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 const std::vector<cg::EulerAngles::Input>& eulers() {

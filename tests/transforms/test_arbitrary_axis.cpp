@@ -4,15 +4,12 @@
 // in long double; the construction's own promises (R_k(−γ) R_j(−φ) a = |a| e_i, R a = a);
 // errors; determinism and the picture.
 #include <catch2/catch.hpp>
-
-#include "support/replay.hpp"
-
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "io/registry.hpp"
+#include "support/replay.hpp"
 #include "transforms/arbitrary_axis.hpp"
 
 using cg::ArbitraryAxis;
@@ -162,7 +159,8 @@ TEST_CASE("arbitrary-axis: the steps show their matrices as numbers",
     const auto& vars = t.steps[6].vars;
     std::vector<std::string> names;
     for (const auto& v : vars) names.push_back(v.name);
-    for (const char* want : {"R_y(-phi)", "R_z(-gamma)", "R_x(theta)", "R_z(gamma)", "R_y(phi)", "R"}) {
+    for (const char* want :
+         {"R_y(-phi)", "R_z(-gamma)", "R_x(theta)", "R_z(gamma)", "R_y(phi)", "R"}) {
         CAPTURE(want);
         const auto it = std::find(names.begin(), names.end(), want);
         REQUIRE(it != names.end());
@@ -185,18 +183,28 @@ TEST_CASE("arbitrary-axis: 10,000 random axes and angles agree with glm::rotate 
         ArbitraryAxis::Input in;
         in.axis = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
         switch (trial % 8) {  // a quarter degenerate, some far from unit length
-            case 0: in.axis[rng.integer(0, 2)] = 0; ++degenerate; break;  // in a coordinate plane
-            case 1: {  // on a coordinate axis, either way
+            case 0:
+                in.axis[rng.integer(0, 2)] = 0;
+                ++degenerate;
+                break;  // in a coordinate plane
+            case 1: {   // on a coordinate axis, either way
                 const int i = static_cast<int>(rng.integer(0, 2));
                 in.axis = dvec3(0);
                 in.axis[i] = rng.chance(0.5) ? 1 : -1;
                 ++degenerate;
                 break;
             }
-            case 2: in.axis *= 1e-150; break;
-            case 3: in.axis *= 1e150; break;
-            case 4: in.axis.y = in.axis.x; break;  // a tie
-            default: break;
+            case 2:
+                in.axis *= 1e-150;
+                break;
+            case 3:
+                in.axis *= 1e150;
+                break;
+            case 4:
+                in.axis.y = in.axis.x;
+                break;  // a tie
+            default:
+                break;
         }
         if (in.axis == dvec3(0)) in.axis.z = 1;
         in.angle_deg = trial % 16 == 5 ? 90.0 * rng.integer(-8, 8) : rng.uniform(-720, 720);
@@ -209,8 +217,8 @@ TEST_CASE("arbitrary-axis: 10,000 random axes and angles agree with glm::rotate 
         ++per_axis[r.canonical];
 
         // GLM's own rotation matrix (the axis normalised by GLM).
-        const dvec3 unit = in.axis / std::max({std::fabs(in.axis.x), std::fabs(in.axis.y),
-                                                std::fabs(in.axis.z)});
+        const dvec3 unit =
+            in.axis / std::max({std::fabs(in.axis.x), std::fabs(in.axis.y), std::fabs(in.axis.z)});
         const glm::dmat4 g = glm::rotate(glm::dmat4(1.0), in.angle_deg * M_PI / 180, unit);
         ld ref[3][3];
         rodrigues(unit, in.angle_deg, ref);

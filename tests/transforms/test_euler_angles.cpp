@@ -3,11 +3,10 @@
 // products of glm::rotate; the lock's lost degree of freedom (θ1 and θ3 trade off exactly,
 // and the derivatives with respect to them are parallel); errors; determinism; the picture.
 #include <catch2/catch.hpp>
-
-#include "support/replay.hpp"
-
 #include <cmath>
 #include <limits>
+
+#include "support/replay.hpp"
 
 #define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtc/matrix_transform.hpp>
@@ -50,7 +49,9 @@ dmat3 from_rows(std::initializer_list<std::initializer_list<double>> rows) {
     return m;
 }
 
-double diff(const dmat3& a, const dmat3& b) { return cg::rot::max_diff(a, b); }
+double diff(const dmat3& a, const dmat3& b) {
+    return cg::rot::max_diff(a, b);
+}
 
 // GLM's matrix for order "abc" with angles (θ1, θ2, θ3): eulerAngleCBA(θ3, θ2, θ1).
 dmat3 glm_euler(const std::string& order, dvec3 deg) {
@@ -124,8 +125,9 @@ TEST_CASE("euler-angles: 10,000 random orders and angles agree with GLM",
     int locked = 0;
     for (int trial = 0; trial < 10000; ++trial) {
         cg::Rng rng(trial);
-        EulerAngles::Input in{kOrders[trial % 6],
-                              {rng.uniform(-360, 360), rng.uniform(-360, 360), rng.uniform(-360, 360)}};
+        EulerAngles::Input in{
+            kOrders[trial % 6],
+            {rng.uniform(-360, 360), rng.uniform(-360, 360), rng.uniform(-360, 360)}};
         if (trial % 5 == 0) in.angles_deg[1] = 90.0 * (2 * rng.integer(-3, 2) + 1);  // ±90, ±270…
         if (trial % 7 == 0) in.angles_deg[0] = 30.0 * rng.integer(-12, 12);
         CAPTURE(trial, in.order, in.angles_deg.x, in.angles_deg.y, in.angles_deg.z);
@@ -147,8 +149,8 @@ TEST_CASE("euler-angles: 10,000 random orders and angles agree with GLM",
                 REQUIRE(diff(R({delta, 0, -r.lock_sign * delta}), r.matrix) <= 1e-12);
             // ... and the matrix depends on θ3 + sθ1 only: dR/dθ1 = s dR/dθ3.
             REQUIRE(diff(d1, double(r.lock_sign) * d3) <= 1e-6);
-            REQUIRE(diff(r.matrix, cg::rot::euler_matrix(in.order, {0, in.angles_deg[1],
-                                                                      r.lock_angle_deg})) <= 1e-9);
+            REQUIRE(diff(r.matrix, cg::rot::euler_matrix(
+                                       in.order, {0, in.angles_deg[1], r.lock_angle_deg})) <= 1e-9);
         } else {
             REQUIRE(r.lock_sign == 0);
             REQUIRE(diff(d1, d3) > 1e-6);
@@ -180,10 +182,13 @@ TEST_CASE("euler-angles: bad input names the field", "[transforms][euler-angles]
     CHECK(error(R"({"order": "zyx", "angles_deg": [1, 2, 3]})") == "(accepted)");
     CHECK_THAT(error(R"({"order": "yxy", "angles_deg": [1, 2, 3]})"),
                Catch::StartsWith("order: must name the three axes once each"));
-    CHECK_THAT(error(R"({"order": 3, "angles_deg": [1, 2, 3]})"), Catch::StartsWith("order: must be a string"));
-    CHECK_THAT(error(R"({"order": "xyz", "angles_deg": [1, 2]})"), Catch::StartsWith("angles_deg: "));
+    CHECK_THAT(error(R"({"order": 3, "angles_deg": [1, 2, 3]})"),
+               Catch::StartsWith("order: must be a string"));
+    CHECK_THAT(error(R"({"order": "xyz", "angles_deg": [1, 2]})"),
+               Catch::StartsWith("angles_deg: "));
     CHECK_THAT(error(R"({"order": "xyz"})"), Catch::StartsWith("angles_deg: is missing"));
-    CHECK_THAT(error(R"({"order": "xyz", "angles": [1, 2, 3]})"), Catch::StartsWith("angles: is not a known field"));
+    CHECK_THAT(error(R"({"order": "xyz", "angles": [1, 2, 3]})"),
+               Catch::StartsWith("angles: is not a known field"));
 }
 
 TEST_CASE("euler-angles: traces are deterministic and stepping back reproduces them",
@@ -192,7 +197,8 @@ TEST_CASE("euler-angles: traces are deterministic and stepping back reproduces t
     const cg::Algorithm* a = registry.find("euler-angles");
     REQUIRE(a);
     cg::test::check_replay(*a, a->example(), cg::test::kEveryStep);
-    cg::test::check_replay(*a, cg::json::parse(R"({"order": "zyx", "angles_deg": [30, 20, 10]})"), 2);
+    cg::test::check_replay(*a, cg::json::parse(R"({"order": "zyx", "angles_deg": [30, 20, 10]})"),
+                           2);
     auto run = a->create(a->example());
     while (!run->done()) run->step(nullptr);
     const cg::json r = a->result(*run);
@@ -217,7 +223,8 @@ TEST_CASE("euler-angles: the picture shows the rolls and, at the lock, two axes 
         cg::Scene first;
         EulerAngles::draw(s, first);
         bool roll_axis = false;
-        for (const auto& seg : first.segments3) roll_axis = roll_axis || seg.label == "roll about x";
+        for (const auto& seg : first.segments3)
+            roll_axis = roll_axis || seg.label == "roll about x";
         CHECK(roll_axis);
         CHECK(first.faces3.size() == 16);  // the house and its ghost
         while (!EulerAngles::done(s)) EulerAngles::step(s, nullptr);
@@ -229,7 +236,8 @@ TEST_CASE("euler-angles: the picture shows the rolls and, at the lock, two axes 
             CHECK(glm::length(glm::cross(red[0], red[1])) < 1e-12);
         } else {
             CHECK(red.empty());
-            const auto inner = axes_of(scene, cg::Role::Leaving), outer = axes_of(scene, cg::Role::Window);
+            const auto inner = axes_of(scene, cg::Role::Leaving),
+                       outer = axes_of(scene, cg::Role::Window);
             REQUIRE(inner.size() == 1);
             REQUIRE(outer.size() == 1);
             CHECK(glm::length(glm::cross(inner[0], outer[0])) > 0.3);
@@ -244,7 +252,9 @@ TEST_CASE("euler-angles: the picture shows the rolls and, at the lock, two axes 
 TEST_CASE("rotations: every step's 3D picture is finite, on examples, presets and exam problems",
           "[transforms][euler-angles][slerp][arbitrary-axis]") {
     const cg::Registry registry = cg::builtin_registry();
-    auto finite = [](dvec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    auto finite = [](dvec3 p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
     for (const char* id : {"arbitrary-axis", "slerp", "euler-angles"}) {
         const cg::Algorithm& a = *registry.find(id);
         std::vector<cg::json> inputs{a.example()};

@@ -4,15 +4,12 @@
 // constant-speed property; the Euler-angle extraction used for the comparison paths; errors;
 // determinism and the picture (slerp on the sphere, the matrix blend inside it).
 #include <catch2/catch.hpp>
-
-#include "support/replay.hpp"
-
 #include <cmath>
+#include <glm/gtc/quaternion.hpp>
 #include <limits>
 
-#include <glm/gtc/quaternion.hpp>
-
 #include "io/registry.hpp"
+#include "support/replay.hpp"
 #include "transforms/slerp.hpp"
 
 using cg::Slerp;
@@ -46,11 +43,13 @@ std::vector<std::string> events(const Traced& t) {
 }
 
 double qdiff(const dquat& a, const dquat& b) {
-    return std::max({std::fabs(a.w - b.w), std::fabs(a.x - b.x), std::fabs(a.y - b.y),
-                     std::fabs(a.z - b.z)});
+    return std::max(
+        {std::fabs(a.w - b.w), std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z)});
 }
 
-double mdiff(const dmat3& a, const dmat3& b) { return cg::rot::max_diff(a, b); }
+double mdiff(const dmat3& a, const dmat3& b) {
+    return cg::rot::max_diff(a, b);
+}
 
 dquat random_quat(cg::Rng& rng) {
     dquat q;
@@ -124,12 +123,14 @@ TEST_CASE("slerp: the course's quaternion algebra agrees with GLM's", "[transfor
         REQUIRE(qdiff(Slerp::conjugate(a), glm::conjugate(a)) == 0);
         // A rotation built from an angle and an axis: (cos θ/2, sin θ/2 v̂) and q (0, P) q̄.
         const double angle = rng.uniform(-M_PI, M_PI);
-        const dvec3 axis = glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+        const dvec3 axis =
+            glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
         const dquat q = glm::angleAxis(angle, axis);
         REQUIRE(std::fabs(q.w - std::cos(angle / 2)) < 1e-15);
         REQUIRE(mdiff(Slerp::to_matrix(q), glm::mat3_cast(q)) < 1e-15);
         const dvec3 p(rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-3, 3));
-        const dquat r = Slerp::product(Slerp::product(q, dquat(0, p.x, p.y, p.z)), Slerp::conjugate(q));
+        const dquat r =
+            Slerp::product(Slerp::product(q, dquat(0, p.x, p.y, p.z)), Slerp::conjugate(q));
         REQUIRE(std::fabs(r.w) < 1e-14);
         REQUIRE(glm::length(dvec3(r.x, r.y, r.z) - q * p) < 1e-14);
         REQUIRE(glm::length(Slerp::to_matrix(q) * p - q * p) < 1e-14);
@@ -144,12 +145,23 @@ TEST_CASE("slerp: 10,000 random pairs agree with glm::slerp and the closed form"
         cg::Rng rng(trial);
         Slerp::Input in{random_quat(rng), random_quat(rng), rng.uniform(0, 1)};
         switch (trial % 10) {  // degenerate pairs and the ends
-            case 0: in.q1 = in.q0 * 3.0; break;
-            case 1: in.q1 = -in.q0; break;
-            case 2: in.q1 = in.q0 + dquat(0, 1e-10, 0, 0); break;
-            case 3: in.q1 = -in.q0 + dquat(1e-7, 0, -1e-7, 0); break;
-            case 4: in.u = trial % 20 == 4 ? 0 : 1; break;
-            default: break;
+            case 0:
+                in.q1 = in.q0 * 3.0;
+                break;
+            case 1:
+                in.q1 = -in.q0;
+                break;
+            case 2:
+                in.q1 = in.q0 + dquat(0, 1e-10, 0, 0);
+                break;
+            case 3:
+                in.q1 = -in.q0 + dquat(1e-7, 0, -1e-7, 0);
+                break;
+            case 4:
+                in.u = trial % 20 == 4 ? 0 : 1;
+                break;
+            default:
+                break;
         }
         CAPTURE(trial, in.u);
         const auto r = cg::run_to_end<Slerp>(Slerp::start(in));
@@ -178,7 +190,8 @@ TEST_CASE("slerp: 10,000 random pairs agree with glm::slerp and the closed form"
         ld ref[4];
         if (std::sin(omega) < 1e-6L) {
             ld n = 0;
-            for (int i = 0; i < 4; ++i) ref[i] = (1 - in.u) * a[i] + in.u * b[i], n += ref[i] * ref[i];
+            for (int i = 0; i < 4; ++i)
+                ref[i] = (1 - in.u) * a[i] + in.u * b[i], n += ref[i] * ref[i];
             for (int i = 0; i < 4; ++i) ref[i] /= std::sqrt(n);
         } else {
             for (int i = 0; i < 4; ++i)
@@ -222,8 +235,10 @@ TEST_CASE("slerp: bad input names the field", "[transforms][slerp]") {
     CHECK_THROWS_WITH(Slerp::start({{1, 0, 0, 0}, {1, 0, 0, 0}, 1.5}),
                       "u: must be in [0, 1] (got 1.5): slerp interpolates between the two "
                       "orientations; extrapolating past them is not supported");
-    CHECK_THROWS_WITH(Slerp::start({{1, 0, 0, 0}, {1, 0, 0, 0}, -0.25}), Catch::StartsWith("u: must be in [0, 1]"));
-    CHECK_THROWS_WITH(Slerp::start({{1, 0, 0, 0}, {1, 0, 0, 0}, nan}), "u: must be a finite number (got NaN)");
+    CHECK_THROWS_WITH(Slerp::start({{1, 0, 0, 0}, {1, 0, 0, 0}, -0.25}),
+                      Catch::StartsWith("u: must be in [0, 1]"));
+    CHECK_THROWS_WITH(Slerp::start({{1, 0, 0, 0}, {1, 0, 0, 0}, nan}),
+                      "u: must be a finite number (got NaN)");
     CHECK_THROWS_WITH(Slerp::start({{1.5e308, 1.5e308, 0, 0}, {1, 0, 0, 0}, 0.5}),
                       Catch::StartsWith("q0: is too large"));
     CHECK_NOTHROW(Slerp::start({{1e-300, 0, 0, 1e-300}, {1, 0, 0, 0}, 0.5}));
@@ -243,13 +258,15 @@ TEST_CASE("slerp: bad input names the field", "[transforms][slerp]") {
           "q0: must be a quaternion [w, x, y, z], got an array ([1,0,0])");
     CHECK_THAT(error(R"({"q0": [1, 0, 0, "a"], "q1": [0, 0, 0, 1], "u": 0.5})"),
                Catch::StartsWith("q0[3]: "));
-    CHECK_THAT(error(R"({"q0": [1, 0, 0, 0], "q1": [0, 0, 0, 1]})"), Catch::StartsWith("u: is missing"));
+    CHECK_THAT(error(R"({"q0": [1, 0, 0, 0], "q1": [0, 0, 0, 1]})"),
+               Catch::StartsWith("u: is missing"));
     CHECK(error(R"({"q0": [0, 0, 0, 0], "q1": [0, 0, 0, 1], "u": 0.5})") ==
           "q0: must not be the zero quaternion [0, 0, 0, 0]: it is no rotation and cannot be "
           "normalised");
 }
 
-TEST_CASE("slerp: traces are deterministic and stepping back reproduces them", "[transforms][slerp]") {
+TEST_CASE("slerp: traces are deterministic and stepping back reproduces them",
+          "[transforms][slerp]") {
     const cg::Registry registry = cg::builtin_registry();
     const cg::Algorithm* a = registry.find("slerp");
     REQUIRE(a);
@@ -263,7 +280,8 @@ TEST_CASE("slerp: traces are deterministic and stepping back reproduces them", "
     CHECK(r["flipped"] == false);
 }
 
-TEST_CASE("slerp: the paths — slerp on the sphere, the matrix blend inside it", "[transforms][slerp]") {
+TEST_CASE("slerp: the paths — slerp on the sphere, the matrix blend inside it",
+          "[transforms][slerp]") {
     auto s = Slerp::start({{1, 0, 0, 1}, {1, 1, 0, 0}, 0.5});
     while (!Slerp::done(s)) Slerp::step(s, nullptr);
     REQUIRE(s.tip_slerp.size() == Slerp::kSamples);
