@@ -4,6 +4,7 @@
 // centres out exactly; the course's tests, one case each; cycles and splits; ties; bad input.
 #include <catch2/catch.hpp>
 
+#include "hsr/complexity.hpp"
 #include "hsr/painters.hpp"
 #include "hsr/random_scene.hpp"
 #include "hsr/screen_scene.hpp"
@@ -272,4 +273,14 @@ TEST_CASE("painters: exam problems match the brute force", "[hsr][painters]") {
     }
     CHECK(moves > 0);
     for (int k = 1; k <= 5; ++k) CHECK(tests[k] > 0);
+}
+
+TEST_CASE("painters: pair tests grow like n squared (the complexity table)", "[hsr][painters]") {
+    const auto rows = complexity({32}, {4, 16, 64}, 3, 11);
+    REQUIRE(rows.size() == 3);
+    for (const auto& r : rows) REQUIRE(r.painter_pair_tests >= 0);
+    // 4× the polygons: well over 4× the pair tests (about 16× for n² growth).
+    CHECK(rows[1].painter_pair_tests > 8 * rows[0].painter_pair_tests);
+    CHECK(rows[2].painter_pair_tests > 8 * rows[1].painter_pair_tests);
+    CHECK_THAT(complexity_table(rows), Catch::Contains("pair tests"));
 }
