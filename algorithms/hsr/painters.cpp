@@ -790,10 +790,15 @@ void Painters::draw(const State& s, Scene& scene) {
         for (const auto& v : o) centre += v;
         scene.labels.push_back({centre / double(o.size()), p.name, {role}});
     };
+    // After a split, the new pieces are shown as the ones just made (orange).
+    const bool split = s.last == Phase::Pair && s.pair.outcome == Outcome::Split;
+    auto made = [&](const Piece& p) { return split && std::find(s.made.begin(), s.made.end(), p.name) != s.made.end(); };
     if (ordering)
-        for (const Piece& p : s.list)
-            show(p, p.name == p_name ? Role::Active : p.name == q_name ? Role::Entering : Role::Subject,
-                 p.name == p_name || p.name == q_name ? 3.0f : 1.5f);
+        for (const Piece& p : s.list) {
+            const bool hot = p.name == p_name || made(p);
+            show(p, hot ? Role::Active : p.name == q_name ? Role::Entering : Role::Subject,
+                 hot || p.name == q_name ? 3.0f : 1.5f);
+        }
     for (const Piece& p : s.settled)
         if (p.name == p_name) show(p, Role::Active, 3.0f);
         else if (p.name == q_name) show(p, Role::Entering, 3.0f);
