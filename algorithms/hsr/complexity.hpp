@@ -1,6 +1,6 @@
 // The cost of the hidden-surface algorithms on growing random scenes, as a table
 // (`cgsandbox complexity hsr`): Warnock's areas and polygon-area classifications against p·n,
-// the z-buffer's depth compares against p_c + n.
+// the z-buffer's depth compares against p_c + n, the painter's pair tests against n².
 #pragma once
 
 #include <cstdint>
@@ -15,8 +15,9 @@ struct ComplexityRow {
     long long p_c = 0;            // pixels scan-converted (with multiplicity)
     long long areas = 0, classifications = 0;  // Warnock
     long long compares = 0, writes = 0;        // z-buffer
-    // Painter's algorithm: pair tests go here once it exists (-1: not measured).
+    // Painter's algorithm: pairs with overlapping z extents tested (-1: not measured).
     long long painter_pair_tests = -1;
+    int trials = 1;               // scenes summed in this row
 };
 
 // One row per (side, n), each the sum over `trials` random scenes seeded from `seed`.

@@ -1,10 +1,11 @@
-// Hidden-surface removal: back-face culling, Warnock and the z-buffer as state machines run to completion vs their
+// Hidden-surface removal: back-face culling, Warnock, the z-buffer and the painter's algorithm as state machines run to completion vs their
 // straight-line functions, on 200 random 64 × 64 screens with 20 polygons each.
 #include <benchmark/benchmark.h>
 
 #include <glm/geometric.hpp>
 
 #include "hsr/backface_cull.hpp"
+#include "hsr/painters.hpp"
 #include "hsr/random_scene.hpp"
 #include "hsr/warnock.hpp"
 #include "hsr/z_buffer.hpp"
@@ -51,6 +52,36 @@ void BM_Warnock_StateMachine(benchmark::State& state) {
             benchmark::DoNotOptimize(cg::run_to_end<cg::Warnock>(cg::Warnock::start({s})).areas);
 }
 BENCHMARK(BM_Warnock_StateMachine)->Unit(benchmark::kMillisecond);
+
+// The painter's algorithm: 200 random 64 × 64 screens with 20 polygons that do not intersect
+// (about half with three strips woven in a cycle).
+const std::vector<cg::hsr::ScreenScene>& layered_scenes() {
+    static const std::vector<cg::hsr::ScreenScene> v = [] {
+        std::vector<cg::hsr::ScreenScene> out;
+        for (std::uint64_t t = 0; t < 200; ++t) {
+            cg::Rng rng(3000 + t);
+            out.push_back(cg::hsr::random_layered_scene(rng, 64, 64, 20));
+        }
+        return out;
+    }();
+    return v;
+}
+
+void BM_Painters_Plain(benchmark::State& state) {
+    for (auto _ : state)
+        for (const auto& s : layered_scenes()) benchmark::DoNotOptimize(cg::Painters::render({s}).pair_tests);
+}
+BENCHMARK(BM_Painters_Plain)->Unit(benchmark::kMillisecond);
+
+void BM_Painters_StateMachine(benchmark::State& state) {
+    for (auto _ : state)
+        for (const auto& s : layered_scenes()) {
+            cg::Painters::State st;
+            st.in = {s};
+            benchmark::DoNotOptimize(cg::run_to_end<cg::Painters>(std::move(st)).pair_tests);
+        }
+}
+BENCHMARK(BM_Painters_StateMachine)->Unit(benchmark::kMillisecond);
 
 // Back-face culling: a 64 × 64 grid sphere (4,032 quads and 128 pole triangles) seen from 200 eyes.
 const cg::BackfaceCull::Input& sphere() {
