@@ -1,7 +1,8 @@
 // Bézier patch exam problems: a bilinear (2 × 2) or biquadratic (3 × 3) patch over a regular
-// grid in x and y (rows along x, columns along y) with small integer heights, evaluated at
+// grid in the xz-plane (rows along z, columns along x) with small integer heights y (up on the
+// 3D canvas, and ∂P/∂s × ∂P/∂t points up), evaluated at
 // s, t ∈ {1/4, 1/2, 3/4} (bilinear) or s = t = 1/2 (biquadratic), so every Q_j and the point
-// are short decimals. Now and then the heights are all 0 (a flat patch: the normal is (0, 0, ±1)),
+// are short decimals. Now and then the heights are all 0 (a flat patch: the normal is (0, 1, 0)),
 // or the first row collapses to a single point (a degenerate corner edge, away from (s, t)).
 #include "core/format.hpp"
 #include "curves/bezier_patch.hpp"
@@ -30,8 +31,8 @@ BezierPatch::Input BezierPatch::exam_input(Rng& rng) {
     for (int i = 0; i < size; ++i) {
         std::vector<glm::dvec3> row;
         for (int j = 0; j < size; ++j)
-            row.push_back({spacing * i, spacing * j,
-                           flat ? 0.0 : static_cast<double>(rng.integer(0, 4))});
+            row.push_back({spacing * j, flat ? 0.0 : static_cast<double>(rng.integer(0, 4)),
+                           spacing * i});
         in.control_points.push_back(std::move(row));
     }
     if (collapsed)

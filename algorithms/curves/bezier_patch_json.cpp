@@ -73,13 +73,13 @@ struct JsonIo<BezierPatch> {
     }
 
     static json example() {
-        // A bicubic hill over the square [0, 3]² (rows along x, columns along y, so the normal
-        // ∂P/∂s × ∂P/∂t points up), evaluated off-centre.
+        // A bicubic hill over the square [0, 3]² of the xz-plane, heights in y (the 3D canvas's
+        // up): rows run along z, columns along x, so ∂P/∂s × ∂P/∂t points up. Off-centre.
         return json{{"control_points",
-                     {{{0, 0, 0}, {0, 1, 1}, {0, 2, 1}, {0, 3, 0}},
-                      {{1, 0, 1}, {1, 1, 3}, {1, 2, 3}, {1, 3, 1}},
-                      {{2, 0, 1}, {2, 1, 3}, {2, 2, 2}, {2, 3, 1}},
-                      {{3, 0, 0}, {3, 1, 1}, {3, 2, 1}, {3, 3, 0}}}},
+                     {{{0, 0, 0}, {1, 1, 0}, {2, 1, 0}, {3, 0, 0}},
+                      {{0, 1, 1}, {1, 3, 1}, {2, 3, 1}, {3, 1, 1}},
+                      {{0, 1, 2}, {1, 3, 2}, {2, 2, 2}, {3, 1, 2}},
+                      {{0, 0, 3}, {1, 1, 3}, {2, 1, 3}, {3, 0, 3}}}},
                     {"s", 0.4},
                     {"t", 0.7}};
     }
