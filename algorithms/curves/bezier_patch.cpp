@@ -537,10 +537,17 @@ void BezierPatch::draw(const State& s, Scene& scene) {
     // constructions), then the normal.
     const std::string at = "P(" + num(in.s, 4) + ", " + num(in.t, 4) + ")";
     if (s.phase != Phase::Derivatives) {
-        scene.segments3.push_back({s.point, s.point + s.ds / static_cast<double>(s.m),
-                                   "∂P/∂s / " + std::to_string(s.m), {Role::Active, 3.0f}, true});
-        scene.segments3.push_back({s.point, s.point + s.dt / static_cast<double>(s.n),
-                                   "∂P/∂t / " + std::to_string(s.n), {Role::Leaving, 3.0f}, true});
+        // A zero derivative (a collapsed row or column) is named instead of drawn.
+        auto arrow = [&](glm::dvec3 d, int degree, const std::string& what, Role role) {
+            if (d == glm::dvec3(0)) {
+                scene.labels3.push_back({s.point, what + " = 0", {role}});
+                return;
+            }
+            scene.segments3.push_back({s.point, s.point + d / static_cast<double>(degree),
+                                       what + " / " + std::to_string(degree), {role, 3.0f}, true});
+        };
+        arrow(s.ds, s.m, "∂P/∂s", Role::Active);
+        arrow(s.dt, s.n, "∂P/∂t", Role::Leaving);
     }
     if (s.phase == Phase::Tessellate || finished) {
         if (s.normal_defined)

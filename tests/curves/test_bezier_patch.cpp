@@ -355,9 +355,15 @@ TEST_CASE("bezier-patch: a collapsed corner or edge gives no normal, and says wh
         CHECK(a.result(*run)["normal"] == cg::json::parse("[0.0, 0.0, 0.0]"));
         cg::Scene scene;
         run->draw(scene);
-        bool said = false;
-        for (const auto& l : scene.labels3) said = said || l.text == "normal undefined here";
+        bool said = false, zero = false;
+        for (const auto& l : scene.labels3) {
+            said = said || l.text == "normal undefined here";
+            zero = zero || l.text == "∂P/∂t = 0";
+        }
         CHECK(said);
+        CHECK(zero);
+        for (const auto& seg : scene.segments3)
+            if (seg.arrow) CHECK(seg.a != seg.b);
     }
     SECTION("a patch folded onto a line: the derivatives are parallel") {
         BezierPatch::Input in;
