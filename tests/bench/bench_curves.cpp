@@ -1,12 +1,13 @@
-// Curves: 10^6 de Casteljau evaluations of random cubics through the state machine vs the
-// straight-line function, and the cost of one narrated step plus its picture for each curve
-// algorithm.
+// Curves: 10^6 de Casteljau evaluations of random cubics and 10^4 bicubic patch runs through
+// the state machine vs the straight-line functions, and the cost of one narrated step plus its
+// picture for each curve algorithm.
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_support.hpp"
 
 #include <random>
 
+#include "curves/bezier_patch.hpp"
 #include "curves/de_casteljau.hpp"
 #include "io/registry.hpp"
 
@@ -59,6 +60,55 @@ void BM_Curve_DeCasteljau_StateMachine(benchmark::State& state) {
 }
 BENCHMARK(BM_Curve_DeCasteljau_StateMachine)->Unit(benchmark::kMillisecond);
 
+// 1,024 random bicubic patches, each evaluated at its own (s, t) with the point, both partial
+// derivatives, the normal and an 8 × 8 tessellation (81 vertices): the whole run.
+constexpr std::size_t kPatches = 10'000;
+
+const std::vector<cg::BezierPatch::Input>& bicubics() {
+    static const std::vector<cg::BezierPatch::Input> inputs = [] {
+        std::mt19937_64 rng(7);
+        std::uniform_real_distribution<double> u(-10, 10), t(0, 1);
+        std::vector<cg::BezierPatch::Input> v(1024);
+        for (auto& in : v) {
+            in.control_points.assign(4, {});
+            for (auto& row : in.control_points)
+                for (int j = 0; j < 4; ++j) row.push_back({u(rng), u(rng), u(rng)});
+            in.s = t(rng), in.t = t(rng);
+        }
+        return v;
+    }();
+    return inputs;
+}
+
+void BM_Curve_BezierPatch_Plain(benchmark::State& state) {
+    const auto& inputs = bicubics();
+    for (auto _ : state) {
+        double sum = 0;
+        for (std::size_t i = 0; i < kPatches; ++i) {
+            const auto r = cg::BezierPatch::evaluate(inputs[i & 1023]);
+            sum += r.point.x + r.normal.y + r.vertices[40].z;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kPatches));
+}
+BENCHMARK(BM_Curve_BezierPatch_Plain)->Unit(benchmark::kMillisecond);
+
+void BM_Curve_BezierPatch_StateMachine(benchmark::State& state) {
+    const auto& inputs = bicubics();
+    for (auto _ : state) {
+        double sum = 0;
+        for (std::size_t i = 0; i < kPatches; ++i) {
+            const auto r =
+                cg::run_to_end<cg::BezierPatch>(cg::BezierPatch::begin(inputs[i & 1023]));
+            sum += r.point.x + r.normal.y + r.vertices[40].z;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kPatches));
+}
+BENCHMARK(BM_Curve_BezierPatch_StateMachine)->Unit(benchmark::kMillisecond);
+
 using cg::bench::step_and_picture;
 
 void BM_Curve_DeCasteljau_StepAndPicture(benchmark::State& state) {
@@ -73,6 +123,10 @@ void BM_Curve_BezierSpline_StepAndPicture(benchmark::State& state) {
     step_and_picture(state, "bezier-spline");
 }
 BENCHMARK(BM_Curve_BezierSpline_StepAndPicture)->Unit(benchmark::kMicrosecond);
+void BM_Curve_BezierPatch_StepAndPicture(benchmark::State& state) {
+    step_and_picture(state, "bezier-patch");
+}
+BENCHMARK(BM_Curve_BezierPatch_StepAndPicture)->Unit(benchmark::kMicrosecond);
 void BM_Curve_ArcLength_StepAndPicture(benchmark::State& state) {
     step_and_picture(state, "arc-length");
 }
