@@ -310,7 +310,68 @@ DeCasteljau::Result DeCasteljau::evaluate(const Input& in) {
 
 // --- [draw] -------------------------------------------------------------------------------------
 
+namespace {
+
+// The curve from t0 to t1 as a chain of 3D segments (a 3D picture has no polylines).
+void curve3(std::span<const glm::dvec3> control, double t0, double t1, Style style, Scene& scene) {
+    constexpr int kSamples = 80;
+    glm::dvec3 prev = curves::bezier_point(control, t0);
+    for (int i = 1; i <= kSamples; ++i) {
+        const glm::dvec3 p = curves::bezier_point(control, t0 + (t1 - t0) * i / kSamples);
+        scene.segments3.push_back({prev, p, "", style, false});
+        prev = p;
+    }
+}
+
+void chain3(const std::vector<glm::dvec3>& points, Style style, Scene& scene) {
+    for (std::size_t i = 0; i + 1 < points.size(); ++i)
+        scene.segments3.push_back({points[i], points[i + 1], "", style, false});
+}
+
+}  // namespace
+
+// 3D control points: the same construction on the 3D canvas (orbit it to see the levels'
+// planes); the handles are 2D-only, so points are edited by typing.
+void DeCasteljau::draw3(const State& s, Scene& scene) {
+    const int n = s.n;
+    const std::span<const glm::dvec3> control{s.levels.data(), static_cast<std::size_t>(n + 1)};
+    const bool finished = s.phase == Phase::Done;
+    const bool label_all = n <= 4;
+    curve3(control, 0, 1, {Role::Construction, 3.0f}, scene);
+    if (s.t < 0 || s.t > 1)
+        curve3(control, std::min(s.t, 1.0), std::max(s.t, 0.0), {Role::Construction, 2.0f, true},
+               scene);
+    chain3({control.begin(), control.end()}, {Role::Subject, 1.5f}, scene);
+    for (int i = 0; i <= n; ++i)
+        scene.points3.push_back({control[static_cast<std::size_t>(i)], point_name(i), {Role::Subject}, 4.5f});
+    const int last_level = std::min(s.k, n - 1);
+    for (int k = 1; k <= last_level; ++k) {
+        const bool newest = k == last_level && !finished && s.phase != Phase::Subdivide;
+        const std::uint32_t rgba = curves::shade(k);
+        std::vector<glm::dvec3> pts;
+        for (int i = 0; i <= n - k; ++i) pts.push_back(at(s, k, i));
+        chain3(pts, {Role::Neutral, newest ? 2.5f : 1.5f, false, rgba}, scene);
+        for (int i = 0; i <= n - k; ++i)
+            scene.points3.push_back({pts[static_cast<std::size_t>(i)],
+                                     (label_all || newest) && !finished ? point_name(i, k) : "",
+                                     {Role::Neutral, 1.5f, false, rgba},
+                                     newest ? 5.0f : 4.0f});
+    }
+    if (s.k == n) {
+        if (s.phase == Phase::Subdivide)
+            scene.segments3.push_back({s.point, s.point + s.tangent / static_cast<double>(n),
+                                       "P′(t)/" + std::to_string(n), {Role::Active, 3.0f}, true});
+        scene.points3.push_back({s.point, "P(" + num(s.t, 4) + ")", {Role::Kept}, 6.5f});
+    }
+    if (finished) {
+        const Result r = view(s);
+        chain3(r.left(), {Role::Entering, 3.0f}, scene);
+        chain3(r.right(), {Role::Leaving, 3.0f}, scene);
+    }
+}
+
 void DeCasteljau::draw(const State& s, Scene& scene) {
+    if (s.dim == 3) return draw3(s, scene);
     const int n = s.n;
     const std::span<const glm::dvec3> control{s.levels.data(), static_cast<std::size_t>(n + 1)};
     const bool finished = s.phase == Phase::Done;
@@ -386,11 +447,6 @@ void DeCasteljau::draw(const State& s, Scene& scene) {
                 {right[i], i == right.size() / 2 ? "right" : "", {Role::Leaving}, 4.5f});
     }
 
-    if (s.dim == 3) {
-        glm::dvec2 lo = polygon[0];
-        for (glm::dvec2 p : polygon) lo = glm::min(lo, p);
-        scene.labels.push_back({lo, "3D points drawn as (x, y): z is dropped", {Role::Neutral}});
-    }
     for (int i = 0; i <= n; ++i) {
         const std::string base = "/control_points/" + std::to_string(i) + "/";
         scene.handles.push_back(

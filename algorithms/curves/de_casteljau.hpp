@@ -14,8 +14,8 @@
 // Steps: one per level 1 .. n − 1 (the points of that level), then the curve point (level n),
 // the tangent, and the subdivision.
 //
-// Conventions: any degree 1 .. 50; points 2D or 3D, stored as dvec3 with z = 0 in 2D (pictures
-// drop z). t must lie in [0, 1] unless `extrapolate` is set: the same construction then gives
+// Conventions: any degree 1 .. 50; points 2D or 3D, stored as dvec3 with z = 0 in 2D (3D
+// control points are drawn on the 3D canvas). t must lie in [0, 1] unless `extrapolate` is set: the same construction then gives
 // the polynomial's continuation (the points are no longer convex combinations), |t| ≤ 1000.
 // The triangle is stored flat, level by level: P_i^k at index k (n + 1) − k (k − 1) / 2 + i.
 #pragma once
@@ -88,6 +88,7 @@ struct DeCasteljau {
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
     static void draw(const State& s, Scene& scene);
+    static void draw3(const State& s, Scene& scene);  // 3D control points: the 3D canvas
 
     // Exam practice (de_casteljau_exam.cpp).
     static Input exam_input(Rng& rng);

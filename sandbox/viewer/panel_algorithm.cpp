@@ -52,6 +52,8 @@ void draw_algorithm_panel(Session& s) {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", l->title.c_str());
     }
 
+    draw_costs_panel(s);
+
     if (!s.input_error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kErrorText));
         text_wrapped(s.input_error);

@@ -11,6 +11,9 @@ namespace cg::viewer {
 void draw_algorithm_panel(Session& s);
 void draw_lessons_panel(Session& s);
 void draw_exam_panel(Session& s);
+// Under the Algorithm tab for the hidden-surface algorithms: their costs plotted against the
+// course's growth laws (panel_costs.cpp).
+void draw_costs_panel(Session& s);
 
 // Right: pseudocode with the active line and breakpoints, the variables, the event legend
 // (panel_code.cpp).

@@ -21,6 +21,7 @@
 
 #include "checkpoint.hpp"
 #include "core/timeline.hpp"
+#include "hsr/complexity.hpp"
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
 #include "viewer/fonts.hpp"
@@ -89,6 +90,7 @@ struct Session {
     std::string preset;     // the lesson preset last loaded (it counts while the input equals it)
     bool browsing = false;  // the Lessons tab lists the lessons although one is open
     ExamState exam;
+    std::vector<hsr::ComplexityRow> hsr_costs;  // the costs plot's table, made when first opened
     Tab tab = Tab::Algorithm;
     bool tab_requested = false;  // select `tab` in the tab bar on the next frame
 

@@ -2,6 +2,8 @@
 // against the Bernstein form in long double (point, derivative, both halves of the split),
 // the plain function against the state machine, bad input, and the picture.
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -289,4 +291,35 @@ TEST_CASE("de-casteljau: exam problems are hand-sized and their answers match th
     }
     CHECK(cubics > 200);
     CHECK_THAT(cg::make_exam(a, 3).question, Catch::Contains("with de Casteljau's algorithm"));
+}
+
+TEST_CASE("de Casteljau: 3D control points are drawn in 3D, 2D ones in 2D", "[de-casteljau][picture]") {
+    DeCasteljau::Input in;
+    in.control_points = {{0, 0, 0}, {1, 2, 1}, {3, 2, -1}, {4, 0, 2}};
+    in.dim = 3;
+    in.t = 0.5;
+    DeCasteljau::State s = DeCasteljau::start(in);
+    while (!DeCasteljau::done(s)) {
+        DeCasteljau::step(s, nullptr);
+        cg::Scene scene;
+        DeCasteljau::draw(s, scene);
+        CHECK(scene.has_3d());
+        CHECK_FALSE(scene.has_2d());
+        CHECK(scene.points3.size() >= 4);
+        for (const auto& seg : scene.segments3)  // every point of the picture is finite
+            CHECK(std::isfinite(seg.a.x + seg.a.y + seg.a.z + seg.b.x + seg.b.y + seg.b.z));
+    }
+    // The curve point sits where the Bernstein form puts it, z included.
+    cg::Scene end;
+    DeCasteljau::draw(s, end);
+    const auto p = std::find_if(end.points3.begin(), end.points3.end(),
+                                [](const cg::Point3& q) { return q.label.rfind("P(", 0) == 0; });
+    REQUIRE(p != end.points3.end());
+    CHECK(p->p.z == Approx(0.125 * 0 + 0.375 * 1 + 0.375 * -1 + 0.125 * 2));
+    in.dim = 2;
+    for (auto& q : in.control_points) q.z = 0;
+    cg::Scene flat;
+    DeCasteljau::draw(DeCasteljau::start(in), flat);
+    CHECK(flat.has_2d());
+    CHECK_FALSE(flat.has_3d());
 }

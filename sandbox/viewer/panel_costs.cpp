@@ -1,0 +1,130 @@
+// The cost comparison of the hidden-surface algorithms, plotted: the counts that
+// `cgsandbox complexity hsr` prints, against the growth the course states for each —
+// the painter's pair tests like n², Warnock's classifications like p·n in the worst case, the
+// z-buffer's depth compares like p_c + n. Shown under the Algorithm tab for the HSR
+// algorithms; computed once per session, on demand (a few hundred milliseconds).
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "hsr/complexity.hpp"
+#include "viewer/im_colour.hpp"
+#include "viewer/palette.hpp"
+#include "viewer/panels.hpp"
+
+namespace cg::viewer {
+
+namespace {
+
+constexpr long long kSide = 32;  // the screen: 32 × 32 pixels
+constexpr int kTrials = 3;
+
+struct Series {
+    const char* name;
+    std::uint32_t rgba;
+    double (*value)(const hsr::ComplexityRow&);
+    bool dashed;
+};
+
+double per_trial(long long v, const hsr::ComplexityRow& r) { return static_cast<double>(v) / r.trials; }
+
+const Series kSeries[] = {
+    {"painter's pair tests", 0xd62728ff,
+     [](const hsr::ComplexityRow& r) { return per_trial(r.painter_pair_tests, r); }, false},
+    {"Warnock classifications", 0x1f77b4ff,
+     [](const hsr::ComplexityRow& r) { return per_trial(r.classifications, r); }, false},
+    {"z-buffer depth compares", 0x2ca02cff,
+     [](const hsr::ComplexityRow& r) { return per_trial(r.compares, r); }, false},
+    {"n²", 0xd62728ff, [](const hsr::ComplexityRow& r) { return double(r.n) * r.n; }, true},
+    {"p·n", 0x1f77b4ff, [](const hsr::ComplexityRow& r) { return double(r.p) * r.n; }, true},
+    {"p_c + n", 0x2ca02cff,
+     [](const hsr::ComplexityRow& r) { return per_trial(r.p_c, r) + r.n; }, true},
+};
+
+// A log-log plot: x = n, y = count, each series a polyline; dashed ones are the course's bounds.
+void plot(const std::vector<hsr::ComplexityRow>& rows) {
+    const float width = ImGui::GetContentRegionAvail().x, height = width * 0.75f;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::Dummy(ImVec2(width, height));
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32_WHITE);
+    const float left = 34, bottom = 18, pad = 6;
+    double ymax = 1;
+    for (const auto& r : rows)
+        for (const Series& s : kSeries) ymax = std::max(ymax, s.value(r));
+    const double xmin = std::log10(std::max(1, rows.front().n)), xmax = std::log10(rows.back().n);
+    const double ytop = std::ceil(std::log10(ymax));
+    auto to_screen = [&](double n, double v) {
+        const double x = (std::log10(n) - xmin) / std::max(xmax - xmin, 1e-9);
+        const double y = std::log10(std::max(v, 1.0)) / std::max(ytop, 1.0);
+        return ImVec2(origin.x + left + static_cast<float>(x) * (width - left - pad),
+                      origin.y + height - bottom - static_cast<float>(y) * (height - bottom - pad));
+    };
+    // Decades on y, the measured n on x.
+    for (int d = 0; d <= static_cast<int>(ytop); ++d) {
+        const ImVec2 a = to_screen(rows.front().n, std::pow(10.0, d));
+        dl->AddLine(ImVec2(origin.x + left, a.y), ImVec2(origin.x + width - pad, a.y),
+                    im_colour(kGridMajor));
+        const std::string label = "1e" + std::to_string(d);
+        dl->AddText(ImVec2(origin.x + 2, a.y - 7), im_colour(kTickLabel), label.c_str());
+    }
+    for (const auto& r : rows) {
+        const ImVec2 a = to_screen(r.n, 1);
+        dl->AddLine(ImVec2(a.x, origin.y + pad), ImVec2(a.x, a.y), im_colour(kGridMinor));
+        dl->AddText(ImVec2(a.x - 4, a.y + 2), im_colour(kTickLabel), std::to_string(r.n).c_str());
+    }
+    for (const Series& s : kSeries) {
+        for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+            const ImVec2 a = to_screen(rows[i].n, s.value(rows[i]));
+            const ImVec2 b = to_screen(rows[i + 1].n, s.value(rows[i + 1]));
+            if (!s.dashed) {
+                dl->AddLine(a, b, im_colour(s.rgba), 2.5f);
+                dl->AddCircleFilled(a, 3.0f, im_colour(s.rgba));
+                dl->AddCircleFilled(b, 3.0f, im_colour(s.rgba));
+            } else {
+                for (float t = 0; t < 1; t += 0.2f) {
+                    const float u = std::min(t + 0.1f, 1.0f);
+                    dl->AddLine(ImVec2(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t),
+                                ImVec2(a.x + (b.x - a.x) * u, a.y + (b.y - a.y) * u),
+                                im_colour(with_alpha(s.rgba, 0x90)), 1.5f);
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void draw_costs_panel(Session& s) {
+    if (!s.algorithm || s.algorithm->spec->topic != "Hidden Surface Removal") return;
+    if (!ImGui::CollapsingHeader("What each algorithm costs")) return;
+    if (s.hsr_costs.empty()) {
+        // Random scenes on a 32 × 32 screen, n = 1 … 32 polygons, three scenes each.
+        s.hsr_costs = hsr::complexity({kSide}, {1, 2, 4, 8, 16, 32}, kTrials, 1);
+    }
+    ImGui::TextWrapped("Counts of each algorithm's basic operation on random scenes (32 × 32 "
+                       "pixels, mean of %d), log-log; dashed: the growth the course states.",
+                       kTrials);
+    plot(s.hsr_costs);
+    for (const Series& series : kSeries) {
+        ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(darker(series.rgba, 0.85f)));
+        ImGui::TextUnformatted((std::string(series.dashed ? "- - " : "—— ") + series.name).c_str());
+        ImGui::PopStyleColor();
+    }
+    if (ImGui::BeginTable("costs", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame)) {
+        for (const char* h : {"n", "pair tests", "classif.", "compares"}) ImGui::TableSetupColumn(h);
+        ImGui::TableHeadersRow();
+        for (const auto& r : s.hsr_costs) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn(), ImGui::Text("%d", r.n);
+            ImGui::TableNextColumn(), ImGui::Text("%.0f", kSeries[0].value(r));
+            ImGui::TableNextColumn(), ImGui::Text("%.0f", kSeries[1].value(r));
+            ImGui::TableNextColumn(), ImGui::Text("%.0f", kSeries[2].value(r));
+        }
+        ImGui::EndTable();
+    }
+}
+
+}  // namespace cg::viewer
