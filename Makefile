@@ -1,8 +1,12 @@
 # CG Sandbox — the two commands:
 #   make run    install what is missing, build, and open the viewer
-#   make test   install what is missing, build, and run every test (GUI tests under xvfb-run)
-# and a few more: make build, make bench, make clean.
-.PHONY: all deps configure build run test bench clean
+#   make test   install what is missing, build, and run every test (GUI tests under xvfb-run),
+#               then the whole suite again under AddressSanitizer + UBSan, with a short run of
+#               each fuzz target (the `sanitize` preset, build-sanitize/)
+# and a few more: make build, make bench, make fuzz, make clean.
+.PHONY: all deps configure build build-sanitize run test test-sanitize bench fuzz clean
+
+FUZZ_SECONDS ?= 300
 
 all: build
 
@@ -15,14 +19,26 @@ configure: deps
 build: configure
 	@cmake --build --preset default
 
+build-sanitize: deps
+	@cmake --preset sanitize >/dev/null
+	@cmake --build --preset sanitize
+
 run: build
 	@build/bin/cgsandbox
 
 test: build
 	@ctest --preset default
+	@$(MAKE) --no-print-directory test-sanitize
+
+test-sanitize: build-sanitize
+	@ctest --preset sanitize
 
 bench: build
 	@build/bin/cgbench
 
+# Each fuzz target for FUZZ_SECONDS (default 300), growing build-sanitize/fuzz/corpus/.
+fuzz: build-sanitize
+	@scripts/fuzz.sh $(FUZZ_SECONDS)
+
 clean:
-	rm -rf build
+	rm -rf build build-sanitize

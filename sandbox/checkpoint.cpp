@@ -49,14 +49,23 @@ json checkpoint_to_json(const Checkpoint& c) {
 }
 
 std::string read_text_file(const std::string& path) {
-    if (path == "-") {
-        std::ostringstream ss;
-        ss << std::cin.rdbuf();
-        return ss.str();
+    std::ifstream file;
+    if (path != "-") {
+        file.open(path, std::ios::binary);
+        if (!file) throw InputError("", "cannot open file");
     }
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw InputError("", "cannot open file");
-    return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    std::istream& in = path == "-" ? std::cin : file;
+    // Read in chunks up to the limit, so that a huge file (or an endless stream) is refused
+    // without first filling the memory.
+    std::string text;
+    char chunk[1 << 16];
+    while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+        text.append(chunk, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxInputBytes)
+            throw InputError("", "the file is larger than " + std::to_string(kMaxInputBytes >> 20) +
+                                     " MiB (the limit for input files)");
+    }
+    return text;
 }
 
 }  // namespace cg

@@ -41,7 +41,9 @@ struct Checkpoint {
 Checkpoint checkpoint_from_json(const json& j, const Registry& registry);
 json checkpoint_to_json(const Checkpoint& c);
 
-// Reads a whole file ("-" is standard input); throws InputError("", "cannot read ...").
+// Reads a whole file ("-" is standard input); throws InputError("", "cannot open file"), or
+// when the file is larger than kMaxInputBytes.
+constexpr std::size_t kMaxInputBytes = std::size_t{128} << 20;
 std::string read_text_file(const std::string& path);
 
 }  // namespace cg

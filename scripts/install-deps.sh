@@ -9,6 +9,7 @@ packages=(
   libsdl2-dev libimgui-dev libglm-dev catch2 libstb-dev
   nlohmann-json3-dev libcli11-dev libbenchmark-dev libpolyclipping-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -100,6 +100,9 @@ void check_points(const std::vector<dvec2>& points, const std::string& name) {
                 throw InputError(field, "must be a finite number (got " + num(v) + ")");
             if (std::fabs(v) > kMaxCoordinate)
                 throw InputError(field, "must be at most 1e100 in size (got " + num(v) + ")");
+            // Below that, edge lengths and areas underflow to zero.
+            if (v != 0 && std::fabs(v) < 1e-100)
+                throw InputError(field, "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
         }
     }
 }

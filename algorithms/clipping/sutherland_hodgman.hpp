@@ -99,6 +99,11 @@ struct SutherlandHodgman {
         std::vector<std::vector<glm::dvec2>> after_edge;
         bool operator==(const State&) const = default;
     };
+    // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    static std::size_t bytes(const State& s) {
+        return heap_bytes(s.in.window) + heap_bytes(s.in.polygon) + heap_bytes(s.input) + heap_bytes(s.output) +
+               heap_bytes(s.after_edge);
+    }
 
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field

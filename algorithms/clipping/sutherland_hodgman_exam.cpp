@@ -295,11 +295,19 @@ Points draw_polygon(Kind kind, const Points& w, Rng& rng, bool want_concave) {
     switch (kind) {
         case Kind::Crossing:
             if (want_concave && rng.chance(0.5)) return crown(w, rng);
-            return star(rng, point(rng, b.x0, b.x1, b.y0, b.y1),
-                        static_cast<int>(rng.integer(3, 6)), rng.integer(3, 5));
+        {
+            // One draw per statement: the order of a call's arguments is unspecified (gcc and
+            // clang differ), and the same seed must give the same problem from either.
+            const long long r = rng.integer(3, 5);
+            const int n = static_cast<int>(rng.integer(3, 6));
+            const dvec2 c = point(rng, b.x0, b.x1, b.y0, b.y1);
+            return star(rng, c, n, r);
+        }
         case Kind::Inside:
-            return star(rng, point(rng, b.x0 + 1, b.x1 - 1, b.y0 + 1, b.y1 - 1),
-                        static_cast<int>(rng.integer(3, 5)), 2);
+        {
+            const int n = static_cast<int>(rng.integer(3, 5));
+            return star(rng, point(rng, b.x0 + 1, b.x1 - 1, b.y0 + 1, b.y1 - 1), n, 2);
+        }
         case Kind::Outside: {
             // A centre beyond one or two of the window's sides.
             const long long dx = rng.integer(-1, 1),
@@ -310,13 +318,17 @@ Points draw_polygon(Kind kind, const Points& w, Rng& rng, bool want_concave) {
                           dy < 0   ? b.y0 - rng.integer(2, 4)
                           : dy > 0 ? b.y1 + rng.integer(2, 4)
                                    : rng.integer(b.y0, b.y1)};
-            return star(rng, c, static_cast<int>(rng.integer(3, 5)), rng.integer(1, 3));
+            const long long r = rng.integer(1, 3);
+            const int n = static_cast<int>(rng.integer(3, 5));
+            return star(rng, c, n, r);
         }
         case Kind::AroundWindow:
             return box_around(w, rng);
         case Kind::VertexOnEdge: {
-            Points p = star(rng, point(rng, b.x0, b.x1, b.y0, b.y1),
-                            static_cast<int>(rng.integer(3, 6)), rng.integer(2, 4));
+            const long long r = rng.integer(2, 4);
+            const int n = static_cast<int>(rng.integer(3, 6));
+            const dvec2 c = point(rng, b.x0, b.x1, b.y0, b.y1);
+            Points p = star(rng, c, n, r);
             if (p.empty()) return p;
             const std::size_t k =
                 static_cast<std::size_t>(rng.integer(0, static_cast<long long>(w.size()) - 1));

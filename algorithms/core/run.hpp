@@ -18,12 +18,28 @@
 // so that running to completion costs about as much as a plain loop.
 #pragma once
 
+#include <concepts>
+#include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "core/scene.hpp"
 #include "core/step.hpp"
 
 namespace cg {
+
+// For an algorithm's optional `static std::size_t bytes(const State&)` (see Run::bytes): the
+// heap memory a vector holds, and a vector of vectors.
+template <class T>
+std::size_t heap_bytes(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+template <class T>
+std::size_t heap_bytes(const std::vector<std::vector<T>>& v) {
+    std::size_t n = v.capacity() * sizeof(std::vector<T>);
+    for (const auto& x : v) n += heap_bytes(x);
+    return n;
+}
 
 class Run {
 public:
@@ -34,6 +50,10 @@ public:
     virtual void step(StepInfo* info) = 0;  // precondition: !done()
     virtual void draw(Scene& scene) const = 0;
     virtual bool same_state(const Run& other) const = 0;
+    // About how much memory this state holds, for the timeline's memory budget: the object
+    // itself plus what an algorithm with big states (pixel buffers, long lists) reports through
+    // an optional `static std::size_t bytes(const State&)` (its heap memory).
+    virtual std::size_t bytes() const { return sizeof(*this); }
 };
 
 template <class A>
@@ -49,6 +69,14 @@ public:
     bool same_state(const Run& other) const override {
         auto* o = dynamic_cast<const RunOf*>(&other);
         return o && o->state == state;
+    }
+    std::size_t bytes() const override {
+        if constexpr (requires(const typename A::State& st) {
+                          { A::bytes(st) } -> std::convertible_to<std::size_t>;
+                      })
+            return sizeof(*this) + A::bytes(state);
+        else
+            return sizeof(*this);
     }
 
     typename A::State state;

@@ -76,6 +76,11 @@ struct ArcLength {
         std::vector<Query> queries;  // answered so far
         bool operator==(const State&) const = default;
     };
+    // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    static std::size_t bytes(const State& s) {
+        return heap_bytes(s.in.control_points) + heap_bytes(s.in.distances) + heap_bytes(s.in.fractions) +
+               heap_bytes(s.u) + heap_bytes(s.s) + heap_bytes(s.points) + heap_bytes(s.queries);
+    }
 
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field

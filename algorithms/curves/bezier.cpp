@@ -105,6 +105,9 @@ void validate_points(std::span<const glm::dvec3> points, int dim, const std::str
                 throw InputError(at, "must be a finite number (got " + num(v) + ")");
             if (std::fabs(v) > kMaxCoordinate)
                 throw InputError(at, "must be within ±1e100 (got " + num(v) + ")");
+            // Below that, squared distances (arc lengths) underflow to zero.
+            if (v != 0 && std::fabs(v) < 1e-100)
+                throw InputError(at, "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
         }
 }
 

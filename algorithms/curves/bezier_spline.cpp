@@ -59,6 +59,8 @@ void check_points(const std::vector<glm::dvec2>& points, const std::string& fiel
                 throw InputError(at, "must be a finite number (got " + num(v) + ")");
             if (std::fabs(v) > curves::kMaxCoordinate)
                 throw InputError(at, "must be within ±1e100 (got " + num(v) + ")");
+            if (v != 0 && std::fabs(v) < 1e-100)
+                throw InputError(at, "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
         }
 }
 

@@ -68,6 +68,17 @@ glm::dvec3 BackfaceCull::view_vector(const Input& in, const std::vector<int>& f)
 }
 
 void BackfaceCull::validate(const Input& in) {
+    // Within ±1e50 and 0 or at least 1e-50 in size: Newell's normals (products of two
+    // coordinates), their squared lengths and N·V then neither overflow nor underflow.
+    auto check_range = [](glm::dvec3 p, const std::string& field) {
+        for (int c = 0; c < 3; ++c) {
+            const double v = p[c];
+            const std::string at = field + "[" + std::to_string(c) + "]";
+            if (std::fabs(v) > 1e50) throw InputError(at, "must be within ±1e50 (got " + num(v) + ")");
+            if (v != 0 && std::fabs(v) < 1e-50)
+                throw InputError(at, "must be 0 or at least 1e-50 in size (got " + num(v) + ")");
+        }
+    };
     auto finite3 = [](glm::dvec3 p) {
         return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
     };
@@ -75,19 +86,23 @@ void BackfaceCull::validate(const Input& in) {
     if (in.vertices.size() > kMaxVertices)
         throw InputError("vertices", "at most " + std::to_string(kMaxVertices) + " vertices, got " +
                                          std::to_string(in.vertices.size()));
-    for (std::size_t i = 0; i < in.vertices.size(); ++i)
+    for (std::size_t i = 0; i < in.vertices.size(); ++i) {
         if (!finite3(in.vertices[i]))
             throw InputError("vertices[" + std::to_string(i) + "]",
                              "every coordinate must be a finite number");
+        check_range(in.vertices[i], "vertices[" + std::to_string(i) + "]");
+    }
     if (in.faces.empty()) throw InputError("faces", "needs at least one face, got none");
     if (in.faces.size() > kMaxFaces)
         throw InputError("faces", "at most " + std::to_string(kMaxFaces) + " faces, got " +
                                       std::to_string(in.faces.size()));
     if (in.perspective && !finite3(in.eye))
         throw InputError("eye", "every coordinate must be a finite number");
+    if (in.perspective) check_range(in.eye, "eye");
     if (!in.perspective) {
         if (!finite3(in.view_dir))
             throw InputError("view_dir", "every coordinate must be a finite number");
+        check_range(in.view_dir, "view_dir");
         if (in.view_dir == glm::dvec3(0, 0, 0))
             throw InputError("view_dir", "is the zero vector: a viewing direction needs a length");
     }

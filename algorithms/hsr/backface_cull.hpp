@@ -57,6 +57,11 @@ struct BackfaceCull {
         int culled = 0, kept = 0;
         bool operator==(const State&) const = default;
     };
+    // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    static std::size_t bytes(const State& s) {
+        return heap_bytes(s.in.vertices) + heap_bytes(s.in.faces) + heap_bytes(s.r.culled) / 8 +
+               heap_bytes(s.r.normals) + heap_bytes(s.r.dots);
+    }
 
     static constexpr std::size_t kMaxVertices = 100'000;
     static constexpr std::size_t kMaxFaces = 100'000;

@@ -14,6 +14,7 @@
 // it covers no pixel centre reliably and has no depth plane to interpolate).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -34,6 +35,13 @@ struct ScreenScene {
     std::vector<ScreenPolygon> polygons;
     bool operator==(const ScreenScene&) const = default;
 };
+
+// The heap memory of a scene (for the algorithms' state sizes; see Run::bytes).
+inline std::size_t heap_bytes(const ScreenScene& s) {
+    std::size_t n = s.polygons.capacity() * sizeof(ScreenPolygon);
+    for (const auto& p : s.polygons) n += p.vertices.capacity() * sizeof(glm::dvec3);
+    return n;
+}
 
 constexpr long long kMaxSide = 1024;       // pixels per side: a limit, said in the error
 constexpr std::size_t kMaxPolygons = 10'000;

@@ -81,6 +81,12 @@ struct Warnock {
         long long areas = 0, classifications = 0;
         bool operator==(const State&) const = default;
     };
+    // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    static std::size_t bytes(const State& s) {
+        return hsr::heap_bytes(s.in.scene) + heap_bytes(s.planes) + heap_bytes(s.outlines) +
+               heap_bytes(s.stack) + heap_bytes(s.lists) + heap_bytes(s.ids) + heap_bytes(s.visited) +
+               heap_bytes(s.polys) + heap_bytes(s.classes);
+    }
 
     static const Spec& spec();
     static void validate(const Input& in);

@@ -68,6 +68,11 @@ struct ZBuffer {
         long long compares = 0, writes = 0;
         bool operator==(const State&) const = default;
     };
+    // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    static std::size_t bytes(const State& s) {
+        return hsr::heap_bytes(s.in.scene) + heap_bytes(s.planes) + heap_bytes(s.ids) + heap_bytes(s.depth) +
+               heap_bytes(s.spans);
+    }
 
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field

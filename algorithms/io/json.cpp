@@ -28,6 +28,7 @@ public:
     bool binary(json::binary_t& b) { return value(), dom_.binary(b); }
     bool start_object(std::size_t n) {
         value();
+        check_depth();
         frames_.push_back({false, 0, ""});
         return dom_.start_object(n);
     }
@@ -38,6 +39,7 @@ public:
     bool end_object() { return frames_.pop_back(), dom_.end_object(); }
     bool start_array(std::size_t n) {
         value();
+        check_depth();
         frames_.push_back({true, 0, ""});
         return dom_.start_array(n);
     }
@@ -56,9 +58,22 @@ private:
         std::size_t next_index;
         std::string key;
     };
+    // Limits that keep a hostile file from exhausting the machine: code that walks a value
+    // recursively (printing it, say) stays shallow, and the parsed document stays small.
+    static constexpr std::size_t kMaxDepth = 256;
+    static constexpr std::size_t kMaxValues = 10'000'000;
+    void check_depth() const {
+        if (frames_.size() >= kMaxDepth)
+            throw InputError(path(), "nested more than " + std::to_string(kMaxDepth) +
+                                         " lists or objects deep (the limit)");
+    }
+
     // Called before each value that parsed: inside an array it takes the next index, so at an
     // error next_index is the element that failed.
     void value() {
+        if (++values_ > kMaxValues)
+            throw InputError(path(), "more than " + std::to_string(kMaxValues) +
+                                         " values in one file (the limit)");
         if (!frames_.empty() && frames_.back().array) frames_.back().key = std::to_string(frames_.back().next_index++);
     }
     std::string path() const {
@@ -76,6 +91,7 @@ private:
 
     nlohmann::detail::json_sax_dom_parser<json> dom_;
     std::vector<Frame> frames_;
+    std::size_t values_ = 0;
 };
 
 }  // namespace

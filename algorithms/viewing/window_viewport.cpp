@@ -150,6 +150,18 @@ void WindowViewport::validate(const Input& in) {
             throw InputError(name, "is too large or too small to map (" + num(width(r)) + " × " +
                                        num(height(r)) + ")");
     }
+    // ... and so must the whole map and the points through it (a tiny window on a huge viewport
+    // scales by 1e600).
+    const dmat3 n = ndc_from(in.window), m = device_from(in.viewport) * n;
+    if (!finite(m))
+        throw InputError("viewport", "is too large for this window: the map's scale overflows");
+    for (std::size_t k = 0; k < in.points.size(); ++k) {
+        const glm::dvec3 p(in.points[k], 1.0);
+        const glm::dvec3 q = n * p, d = m * p;
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(d.x) || !std::isfinite(d.y))
+            throw InputError("points[" + std::to_string(k) + "]",
+                             "maps outside the range of numbers (its coordinates overflow)");
+    }
 }
 
 WindowViewport::State WindowViewport::start(const Input& in) {

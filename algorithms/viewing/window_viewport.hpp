@@ -89,6 +89,10 @@ struct WindowViewport {
         std::vector<glm::dvec2> device;  // mapped so far
         bool operator==(const State&) const = default;
     };
+    // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    static std::size_t bytes(const State& s) {
+        return heap_bytes(s.in.points) + heap_bytes(s.ndc) + heap_bytes(s.device);
+    }
 
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <random>
+#include <vector>
 
 #include "core/timeline.hpp"
 
@@ -46,6 +47,26 @@ std::unique_ptr<cg::Run> walk(long long n) {
 const Walk::State& state_of(const cg::Timeline& t) {
     return static_cast<const cg::RunOf<Walk>&>(t.current()).state;
 }
+
+// The walk with a big state (a payload of `bytes_each` bytes, like a z-buffer's pixels),
+// which it reports through bytes(): the timeline must then keep to its byte budget.
+struct HeavyWalk : Walk {
+    struct Input { long long n = 0; std::size_t bytes_each = 0; };
+    struct State {
+        Walk::State walk;
+        std::vector<unsigned char> payload;
+        bool operator==(const State&) const = default;
+    };
+    static State start(const Input& in) { return {Walk::start({in.n}), std::vector<unsigned char>(in.bytes_each, 7)}; }
+    static void step(State& s, cg::StepInfo* info) {
+        Walk::step(s.walk, info);
+        s.payload[static_cast<std::size_t>(s.walk.i) % s.payload.size()] ^= 1;
+    }
+    static bool done(const State& s) { return Walk::done(s.walk); }
+    static Result result(const State& s) { return Walk::result(s.walk); }
+    static std::size_t bytes(const State& s) { return cg::heap_bytes(s.payload); }
+    static void draw(const State&, cg::Scene&) {}
+};
 
 }  // namespace
 
@@ -125,6 +146,36 @@ TEST_CASE("timeline: a million steps keep memory bounded and back-steps cheap", 
     t.jump(n);
     REQUIRE(state_of(t) == expected);
     REQUIRE(t.stored_states() < 6000);
+}
+
+TEST_CASE("timeline: a million steps of a big state keep to the byte budget", "[timeline][limits]") {
+    // 1 MB states: a million of them would be a terabyte, and even sqrt-many (~3000) 3 GB.
+    const long long n = 1'000'000;
+    const std::size_t budget = std::size_t{64} << 20;
+    cg::Timeline t(std::make_unique<cg::RunOf<HeavyWalk>>(HeavyWalk::start({n, 1 << 20})), 50'000'000, budget);
+    const std::size_t state = cg::RunOf<HeavyWalk>(HeavyWalk::start({1, 1 << 20})).bytes();
+    REQUIRE(state > (1u << 20));
+    // Over budget by at most the two states always kept (the start and the current one).
+    const std::size_t bound = budget + 2 * state;
+    for (int i = 0; i < 300; ++i) REQUIRE(t.forward());
+    CHECK(t.stored_bytes() <= bound);
+    t.to_end();
+    REQUIRE(t.index() == std::size_t(n));
+    CAPTURE(t.stride(), t.stored_states(), t.stored_bytes());
+    CHECK(t.stored_bytes() <= bound);
+    CHECK(t.stored_states() <= bound / state + 1);
+    // Back and forth still reproduces the states exactly, within the budget.
+    const HeavyWalk::State end = static_cast<const cg::RunOf<HeavyWalk>&>(t.current()).state;
+    for (int i = 0; i < 100; ++i) REQUIRE(t.back());
+    CHECK(static_cast<const cg::RunOf<HeavyWalk>&>(t.current()).state.walk.i == n - 100);
+    CHECK(t.stored_bytes() <= bound);
+    t.jump(n / 2);
+    CHECK(static_cast<const cg::RunOf<HeavyWalk>&>(t.current()).state.walk.i == n / 2);
+    CHECK(t.stored_bytes() <= bound);
+    t.to_end();
+    CHECK(static_cast<const cg::RunOf<HeavyWalk>&>(t.current()).state == end);
+    // The accounting matches the states actually kept.
+    CHECK(t.stored_bytes() == t.stored_states() * state);
 }
 
 TEST_CASE("timeline: a run that is done at the start has no steps", "[timeline]") {

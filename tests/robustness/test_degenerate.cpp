@@ -1,0 +1,215 @@
+// Degenerate input, algorithm by algorithm, through the CLI as a user reaches it: one shared
+// harness (degenerate.hpp) over one table per algorithm (tables/<id>.json), plus sweeps that
+// put NaN, infinities and huge and tiny magnitudes into every numeric field of each table's
+// base input.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/scene.hpp"
+#include "io/registry.hpp"
+#include "robustness/degenerate.hpp"
+#include "support/process.hpp"
+
+using cg::json;
+using cg::test::cgsandbox;
+
+namespace {
+
+const cg::Registry& registry() {
+    static const cg::Registry r = cg::builtin_registry();
+    return r;
+}
+
+const std::vector<cg::test::Table>& tables() {
+    static const std::vector<cg::test::Table> t = cg::test::load_tables();
+    return t;
+}
+
+json base_of(const cg::test::Table& t) {
+    if (!t.base.is_null()) return t.base;
+    const cg::Algorithm* a = registry().find(t.id);
+    return a ? a->example() : json::object();
+}
+
+std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+bool finite(glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+bool finite(glm::dvec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// Where a scene has a non-finite coordinate ("" when it has none).
+std::string scene_problem(const cg::Scene& s) {
+    for (const auto& p : s.points) if (!finite(p.p)) return "points";
+    for (const auto& g : s.segments) if (!finite(g.a) || !finite(g.b)) return "segments";
+    for (const auto& p : s.polygons)
+        for (auto q : p.points) if (!finite(q)) return "polygons";
+    for (const auto& h : s.half_planes) if (!finite(h.point) || !finite(h.inward)) return "half_planes";
+    for (const auto& l : s.labels) if (!finite(l.p)) return "labels";
+    for (const auto& h : s.handles) if (!finite(h.p)) return "handles";
+    for (const auto& p : s.points3) if (!finite(p.p)) return "points3";
+    for (const auto& g : s.segments3) if (!finite(g.a) || !finite(g.b)) return "segments3";
+    for (const auto& f : s.faces3)
+        for (auto q : f.points) if (!finite(q)) return "faces3";
+    for (const auto& l : s.labels3) if (!finite(l.p)) return "labels3";
+    return "";
+}
+
+// Runs an accepted input in process as the viewer does: every step narrated and drawn. Returns
+// what is wrong ("" when nothing): a non-finite number in a step's variables, the picture or
+// the result, or a run that does not end.
+std::string run_clean(const cg::Algorithm& a, const json& input) {
+    auto run = a.create(input);
+    constexpr std::size_t kCap = 200'000;
+    std::size_t steps = 0;
+    for (; !run->done() && steps < kCap; ++steps) {
+        cg::StepInfo info;
+        run->step(&info);
+        auto bad = cg::test::non_finite(cg::step_to_json(steps + 1, info));
+        if (!bad.empty()) return "step " + std::to_string(steps + 1) + ": " + bad.front() + " is not finite";
+        cg::Scene scene;
+        run->draw(scene);
+        if (auto p = scene_problem(scene); !p.empty())
+            return "step " + std::to_string(steps + 1) + ": the picture's " + p + " are not finite";
+    }
+    if (!run->done()) return "no end after " + std::to_string(kCap) + " steps";
+    auto bad = cg::test::non_finite(a.result(*run));
+    return bad.empty() ? "" : "result" + bad.front() + " is not finite";
+}
+
+}  // namespace
+
+TEST_CASE("robustness: every registered algorithm has a degenerate-input table", "[robustness]") {
+    std::set<std::string> have;
+    for (const auto& t : tables()) {
+        CAPTURE(t.file);
+        CHECK(registry().find(t.id) != nullptr);  // a table for an algorithm that is not registered
+        CHECK(have.insert(t.id).second);          // two tables for one algorithm
+        CHECK(t.file.ends_with("/" + t.id + ".json"));
+    }
+    for (const cg::Algorithm& a : registry().all()) {
+        INFO("add tests/robustness/tables/" << a.spec->id << ".json (format: tests/robustness/degenerate.hpp)");
+        CHECK(have.count(a.spec->id) == 1);
+    }
+}
+
+TEST_CASE("robustness: every table row is well formed and the tables cover the required kinds", "[robustness]") {
+    for (const auto& t : tables()) {
+        CAPTURE(t.file);
+        std::set<std::string> kinds, names;
+        REQUIRE(t.rows.is_array());
+        for (const json& row : t.rows) {
+            CAPTURE(row.dump());
+            CHECK(row.value("name", "") != "");
+            CHECK(names.insert(row.value("name", "")).second);
+            const std::string kind = row.value("kind", "");
+            CHECK(std::find(cg::test::kKinds.begin(), cg::test::kKinds.end(), kind) != cg::test::kKinds.end());
+            kinds.insert(kind);
+            REQUIRE(row.contains("expect"));
+            const json& e = row["expect"];
+            const bool error = e.contains("error") && e["error"].is_string() && !e["error"].get<std::string>().empty();
+            const bool result = e.contains("result") && e["result"].is_object() && !e["result"].empty();
+            CHECK(error != result);  // exactly one, and not empty
+            for (auto it = row.begin(); it != row.end(); ++it)
+                CHECK(std::set<std::string>{"name", "kind", "set", "raw", "remove", "input", "text", "expect"}.count(it.key()) == 1);
+        }
+        for (const std::string& k : cg::test::kRequiredKinds) {
+            CAPTURE(k);
+            CHECK(kinds.count(k) == 1);
+        }
+    }
+}
+
+TEST_CASE("robustness: degenerate rows give their stated outcome through the CLI", "[robustness]") {
+    for (const auto& t : tables()) {
+        const cg::Algorithm* a = registry().find(t.id);
+        if (!a) continue;  // reported by the test above
+        const json base = base_of(t);
+        for (const json& row : t.rows) {
+            const std::string name = row.value("name", "");
+            DYNAMIC_SECTION(t.id << ": " << name) {
+                const std::string text = cg::test::row_text(base, row);
+                CAPTURE(text);
+                const std::string path = cg::test::write_temp("degenerate.json", text);
+                auto r = cgsandbox({"run", t.id, "--input", path});
+                CAPTURE(r.exit_code, r.out, r.err);
+                const json& e = row["expect"];
+                if (e.contains("error")) {
+                    CHECK(r.exit_code == 2);
+                    CHECK(r.out.empty());
+                    CHECK(lines(r.err) == 1);
+                    CHECK_THAT(r.err, Catch::StartsWith("cgsandbox: " + path + ": ") &&
+                                          Catch::Contains(e["error"].get<std::string>()));
+                } else {
+                    REQUIRE(r.exit_code == 0);
+                    CHECK(r.err.empty());
+                    REQUIRE(lines(r.out) == 1);
+                    const json result = json::parse(r.out);
+                    std::string why;
+                    CHECK(cg::test::matches(e["result"], result, why));
+                    CAPTURE(why);
+                    CHECK(why.empty());
+                    // What the viewer would show of it is finite too.
+                    CHECK(run_clean(*a, cg::parse_json(text)) == "");
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("robustness: NaN and infinities in every numeric field are refused, naming the field", "[robustness][sweep]") {
+    for (const auto& t : tables()) {
+        if (!registry().find(t.id)) continue;
+        const json base = base_of(t);
+        const auto leaves = cg::test::numeric_leaves(base);
+        REQUIRE(!leaves.empty());
+        for (const auto& leaf : leaves)
+            for (const char* raw : {"NaN", "1e999", "-1e999"}) {
+                CAPTURE(t.id, leaf.path, raw);
+                const std::string path = cg::test::write_temp("nan.json", cg::test::splice_raw(base, leaf.pointer, raw));
+                auto r = cgsandbox({"run", t.id, "--input", path});
+                CHECK(r.exit_code == 2);
+                CHECK(r.out.empty());
+                CHECK(lines(r.err) == 1);
+                const std::string why = std::string(raw) == "NaN" ? "not valid JSON" : "not valid JSON: number overflow";
+                CHECK_THAT(r.err, Catch::StartsWith("cgsandbox: " + path + ": " + leaf.path + ": " + why));
+            }
+    }
+}
+
+// Huge and tiny magnitudes are legal JSON, so each algorithm decides: it either runs to a result
+// whose every number (and every step's, and the picture's) is finite, or refuses with one line
+// that names the field changed, or the field it is checked against (its enclosing list or
+// object, or a sibling such as window.xmax for window.xmin).
+TEST_CASE("robustness: huge and tiny magnitudes in every numeric field give a finite result or an error naming a field", "[robustness][sweep]") {
+    std::size_t accepted = 0, refused = 0;
+    for (const auto& t : tables()) {
+        const cg::Algorithm* a = registry().find(t.id);
+        if (!a) continue;
+        const json base = base_of(t);
+        for (const auto& leaf : cg::test::numeric_leaves(base))
+            for (const char* raw : {"1e300", "-1e300", "1e-300"}) {
+                CAPTURE(t.id, leaf.path, raw);
+                const std::string text = cg::test::splice_raw(base, leaf.pointer, raw);
+                const std::string path = cg::test::write_temp("magnitude.json", text);
+                auto r = cgsandbox({"run", t.id, "--input", path});
+                CAPTURE(r.exit_code, r.out, r.err);
+                REQUIRE((r.exit_code == 0 || r.exit_code == 2));
+                if (r.exit_code == 0) {
+                    ++accepted;
+                    CHECK(r.err.empty());
+                    CHECK(run_clean(*a, cg::parse_json(text)) == "");
+                } else {
+                    ++refused;
+                    CHECK(r.out.empty());
+                    CHECK(lines(r.err) == 1);
+                    // "cgsandbox: FILE: FIELD: reason" with FIELD the first path segment of the
+                    // leaf's (its top-level field) or deeper.
+                    const std::string top = leaf.path.substr(0, leaf.path.find_first_of(".["));
+                    CHECK_THAT(r.err, Catch::StartsWith("cgsandbox: " + path + ": " + top));
+                }
+            }
+    }
+    WARN("magnitude sweep: " << accepted << " accepted with finite results, " << refused << " refused");
+}
