@@ -100,9 +100,9 @@ struct SutherlandHodgman {
         bool operator==(const State&) const = default;
     };
     // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    // The input is not counted: copies of a state share it (Shared<Input>).
     static std::size_t bytes(const State& s) {
-        return heap_bytes(s.in.window) + heap_bytes(s.in.polygon) + heap_bytes(s.input) + heap_bytes(s.output) +
-               heap_bytes(s.after_edge);
+        return heap_bytes(s.input) + heap_bytes(s.output) + heap_bytes(s.after_edge);
     }
 
     static const Spec& spec();

@@ -58,8 +58,9 @@ struct BackfaceCull {
         bool operator==(const State&) const = default;
     };
     // The state's heap memory, for the timeline's memory budget (see Run::bytes).
+    // The input is not counted: copies of a state share it (Shared<Input>).
     static std::size_t bytes(const State& s) {
-        return heap_bytes(s.in.vertices) + heap_bytes(s.in.faces) + heap_bytes(s.r.culled) / 8 +
+        return heap_bytes(s.r.culled) / 8 +
                heap_bytes(s.r.normals) + heap_bytes(s.r.dots);
     }
 
