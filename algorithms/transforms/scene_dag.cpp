@@ -109,6 +109,17 @@ std::string mat_text(const dmat4& m) {
     return t;
 }
 
+// A node's name inside LaTeX: \text{…} with its underscores escaped.
+std::string tex_name(const std::string& name) {
+    std::string t = "\\text{";
+    for (char c : name) {
+        if (c == '_' || c == '{' || c == '}' || c == '&' || c == '%' || c == '$' || c == '#')
+            t += '\\';
+        t += c;
+    }
+    return t + "}";
+}
+
 std::string mat_tex(const dmat4& m) {
     std::string t = "\\begin{bmatrix}";
     for (int i = 0; i < 4; ++i) {
@@ -403,7 +414,7 @@ void SceneDag::narrate(const State& s, StepInfo& info) {
                              "; multiplying on the right applies the node's transform first, "
                              "in its parent's frame. The top, the world matrix of " + here +
                              ", is now " + mat_text(s.stack.back()) + ".";
-            info.math = "S_{" + D + "} \\leftarrow S_{" + D + "} M_{\\text{" + node + "}} = " +
+            info.math = "S_{" + D + "} \\leftarrow S_{" + D + "} M_{" + tex_name(node) + "} = " +
                         mat_tex(s.stack.back());
             break;
         }
@@ -416,7 +427,7 @@ void SceneDag::narrate(const State& s, StepInfo& info) {
                              std::to_string(s.draws.size()) + ", path " + here +
                              "): its centre lands at " + num(o, 4) + " and its corner (½, ½, ½) at " +
                              num(c, 4) + ".";
-            info.math = "p_{world} = S_{" + D + "}\\, p_{" + node + "},\\; S_{" + D +
+            info.math = "p_{world} = S_{" + D + "}\\, p_{" + tex_name(node) + "},\\; S_{" + D +
                         "} \\begin{bmatrix} 1/2 \\\\ 1/2 \\\\ 1/2 \\\\ 1 \\end{bmatrix} = " + tex(c, 4);
             break;
         }
