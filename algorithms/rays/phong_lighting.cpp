@@ -112,9 +112,15 @@ void PhongLighting::validate(const Input& in) {
         throw InputError("eye",
                          "must differ from point: the view direction v = (E − P)/|E − P| "
                          "is undefined when the eye is at the point");
-    if (!std::isfinite(glm::length(in.eye - in.point)) ||
-        !std::isfinite(glm::length(in.normal) + 1))
-        throw InputError("eye", "is too far from the point for double precision");
+    if (!std::isfinite(glm::length(in.normal) + 1))
+        throw InputError("normal", "is too large to normalise (got " + num(in.normal) + ")");
+    if (!std::isfinite(glm::length(in.eye - in.point))) {
+        // Name the field that is out of range: the one with the larger coordinate.
+        const auto big = [](const dvec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); };
+        throw InputError(big(in.point) > big(in.eye) ? "point" : "eye",
+                         "is too far from the " + std::string(big(in.point) > big(in.eye) ? "eye" : "point") +
+                             " for double precision");
+    }
     check_color(in.ambient, in.rgb, "ambient", "an intensity");
     check_color(in.material.ka, in.rgb, "material.ka", "a reflection coefficient");
     check_color(in.material.kd, in.rgb, "material.kd", "a reflection coefficient");

@@ -125,9 +125,13 @@ void ArbitraryAxis::validate(const Input& in) {
                                      "matters)");
     check_finite(in.angle_deg, "angle_deg");
     for (std::size_t p = 0; p < in.points.size(); ++p)
-        for (int c = 0; c < 3; ++c)
-            check_finite(in.points[p][c],
-                         "points[" + std::to_string(p) + "][" + std::to_string(c) + "]");
+        for (int c = 0; c < 3; ++c) {
+            const std::string f = "points[" + std::to_string(p) + "][" + std::to_string(c) + "]";
+            check_finite(in.points[p][c], f);
+            // The picture sizes itself by |p|, whose square overflows past about 1e154.
+            if (std::fabs(in.points[p][c]) > 1e100)
+                throw InputError(f, "must be within ±1e100 (got " + num(in.points[p][c]) + ")");
+        }
 }
 
 ArbitraryAxis::State ArbitraryAxis::start(const Input& in) {

@@ -137,9 +137,16 @@ void NormalTransform::validate(const Input& in) {
         glm::length(glm::cross(t[0], t[1])) <= 1e-9 * glm::length(t[0]) * glm::length(t[1]))
         throw InputError("tangents[1]", "must not be parallel to tangents[0]: they must span the "
                                         "surface's plane");
+    // The results are normalised and compared by cosines, so each mapped vector's length must be
+    // finite and not underflow (det = 1e-300 maps n = (1, 1, 0) to (1e300, 1, 0), whose |n'|²
+    // overflows and made the unit normal (0, 0, 0)).
+    const auto usable = [](dvec3 v) {
+        const double len = glm::length(v);
+        return std::isfinite(len) && len >= 1e-150;
+    };
     for (int i = 0; i < 2; ++i)
-        if (!finite(in.linear * t[i]) || !finite(in.linear * in.normal) ||
-            !finite(inverse_transpose(in.linear, det) * in.normal))
+        if (!usable(in.linear * t[i]) || !usable(in.linear * in.normal) ||
+            !usable(inverse_transpose(in.linear, det) * in.normal))
             throw InputError("matrix", "maps the vectors out of range");
 }
 

@@ -260,6 +260,10 @@ void Perspective::validate(const Input& in) {
     if (in.near <= 0)
         throw InputError("near", "must be positive: the near plane lies in front of the eye (got " +
                                      num(in.near) + ")");
+    // Beyond these the matrix's entries (far + near)/(far − near) and 2 far near/(far − near)
+    // lose all precision or overflow, and near is the first of the two a user puts out of range.
+    if (in.near < 1e-100 || in.near > 1e100)
+        throw InputError("near", "must lie between 1e-100 and 1e100 (got " + num(in.near) + ")");
     if (in.far <= in.near)
         throw InputError("far", "must be greater than near (" + num(in.far) +
                                     " ≤ " + num(in.near) + ")");

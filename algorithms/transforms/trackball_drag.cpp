@@ -156,6 +156,10 @@ void TrackballDrag<K>::validate(const Input& in) {
     if (in.viewport.y <= 0)
         throw InputError("viewport[1]",
                          "the height must be positive (got " + num(in.viewport.y) + ")");
+    if (in.viewport.x < 1e-100 || in.viewport.x > 1e100 || in.viewport.y < 1e-100 ||
+        in.viewport.y > 1e100)
+        throw InputError(in.viewport.x < 1e-100 || in.viewport.x > 1e100 ? "viewport[0]" : "viewport[1]",
+                         "must lie between 1e-100 and 1e100 pixels (got " + num(in.viewport) + ")");
     if (in.samples.size() < 2)
         throw InputError("samples", "needs at least 2 mouse samples to make a drag (got " +
                                         std::to_string(in.samples.size()) + ")");
