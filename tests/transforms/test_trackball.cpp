@@ -393,7 +393,7 @@ TEST_CASE("trackball: bad input names the field", "[transforms][arcball][virtual
     CHECK_THROWS_WITH(VirtualSphere::start({{100, 100}, {{1, 1}, {nan, 2}}, {}}),
                       "samples[1][0]: must be a finite number (got NaN)");
     CHECK_THROWS_WITH(VirtualSphere::start({{1e-300, 1e-300}, {{1, 1}, {1e300, 2}}, {}}),
-                      Catch::StartsWith("samples[0]: is too far from the viewport"));
+                      Catch::StartsWith("viewport[0]: must lie between 1e-100 and 1e100 pixels"));
     CHECK_THROWS_WITH(Arcball::start({{100, 100}, two, {{0, 0, nan}}}),
                       "object[0][2]: must be a finite number (got NaN)");
     CHECK_THROWS_WITH(Arcball::start({{100, 100}, two, {{0, 0, 1e200}}}),
