@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <random>
 
+#include "support/traced.hpp"
 #include "curve_reference.hpp"
 #include "curves/bezier_patch.hpp"
 #include "io/exam.hpp"
@@ -23,22 +24,9 @@ namespace {
 
 using Grid = std::vector<std::vector<dvec3>>;
 
-struct Traced {
-    BezierPatch::Result result;
-    std::vector<cg::StepInfo> steps;
-};
+using Traced = cg::test::Traced<BezierPatch>;
 
-Traced run_traced(const BezierPatch::Input& in) {
-    Traced t;
-    auto s = BezierPatch::start(in);
-    while (!BezierPatch::done(s)) {
-        cg::StepInfo info;
-        BezierPatch::step(s, &info);
-        t.steps.push_back(info);
-    }
-    t.result = BezierPatch::result(s);
-    return t;
-}
+Traced run_traced(const BezierPatch::Input& in) { return cg::test::run_traced<BezierPatch>(in); }
 
 // --- the reference: the double sum, written from the formula, in long double ---------------
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <random>
 
+#include "support/traced.hpp"
 #include "curve_reference.hpp"
 #include "curves/de_casteljau.hpp"
 #include "io/exam.hpp"
@@ -17,22 +18,9 @@ using glm::dvec3;
 
 namespace {
 
-struct Traced {
-    DeCasteljau::Result result;
-    std::vector<cg::StepInfo> steps;
-};
+using Traced = cg::test::Traced<DeCasteljau>;
 
-Traced run_traced(const DeCasteljau::Input& in) {
-    Traced t;
-    auto s = DeCasteljau::start(in);
-    while (!DeCasteljau::done(s)) {
-        cg::StepInfo info;
-        DeCasteljau::step(s, &info);
-        t.steps.push_back(info);
-    }
-    t.result = DeCasteljau::result(s);
-    return t;
-}
+Traced run_traced(const DeCasteljau::Input& in) { return cg::test::run_traced<DeCasteljau>(in); }
 
 DeCasteljau::Input cubic(double t) {
     return {{{0, 0, 0}, {1, 3, 0}, {4, 4, 0}, {6, 1, 0}}, 2, t, false};

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 
+#include "support/traced.hpp"
 #include "io/registry.hpp"
 #include "support/replay.hpp"
 #include "transforms/arbitrary_axis.hpp"
@@ -18,22 +19,9 @@ using glm::dvec3;
 
 namespace {
 
-struct Traced {
-    ArbitraryAxis::Result result;
-    std::vector<cg::StepInfo> steps;
-};
+using Traced = cg::test::Traced<ArbitraryAxis>;
 
-Traced run_traced(const ArbitraryAxis::Input& in) {
-    Traced t;
-    auto s = ArbitraryAxis::start(in);
-    while (!ArbitraryAxis::done(s)) {
-        cg::StepInfo info;
-        ArbitraryAxis::step(s, &info);
-        t.steps.push_back(info);
-    }
-    t.result = ArbitraryAxis::result(s);
-    return t;
-}
+Traced run_traced(const ArbitraryAxis::Input& in) { return cg::test::run_traced<ArbitraryAxis>(in); }
 
 std::vector<std::string> events(const Traced& t) {
     std::vector<std::string> e;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "support/traced.hpp"
 #include "support/replay.hpp"
 
 #define GLM_ENABLE_EXPERIMENTAL
@@ -21,22 +22,9 @@ using glm::dvec3;
 
 namespace {
 
-struct Traced {
-    EulerAngles::Result result;
-    std::vector<cg::StepInfo> steps;
-};
+using Traced = cg::test::Traced<EulerAngles>;
 
-Traced run_traced(const EulerAngles::Input& in) {
-    Traced t;
-    auto s = EulerAngles::start(in);
-    while (!EulerAngles::done(s)) {
-        cg::StepInfo info;
-        EulerAngles::step(s, &info);
-        t.steps.push_back(info);
-    }
-    t.result = EulerAngles::result(s);
-    return t;
-}
+Traced run_traced(const EulerAngles::Input& in) { return cg::test::run_traced<EulerAngles>(in); }
 
 dmat3 from_rows(std::initializer_list<std::initializer_list<double>> rows) {
     dmat3 m(0.0);

@@ -6,6 +6,7 @@
 // picture; exam problems.
 #include <catch2/catch.hpp>
 
+#include "support/traced.hpp"
 #include "support/replay.hpp"
 
 #include <cmath>
@@ -26,22 +27,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Traced {
-    Perspective::Result result;
-    std::vector<cg::StepInfo> steps;
-};
+using Traced = cg::test::Traced<Perspective>;
 
-Traced run_traced(const Perspective::Input& in) {
-    Traced t;
-    auto s = Perspective::start(in);
-    while (!Perspective::done(s)) {
-        cg::StepInfo info;
-        Perspective::step(s, &info);
-        t.steps.push_back(info);
-    }
-    t.result = Perspective::result(s);
-    return t;
-}
+Traced run_traced(const Perspective::Input& in) { return cg::test::run_traced<Perspective>(in); }
 
 std::vector<std::string> events(const Traced& t) {
     std::vector<std::string> e;

@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
 
+#include "support/traced.hpp"
 #include "io/registry.hpp"
 #include "support/replay.hpp"
 #include "transforms/slerp.hpp"
@@ -19,22 +20,9 @@ using glm::dvec3;
 
 namespace {
 
-struct Traced {
-    Slerp::Result result;
-    std::vector<cg::StepInfo> steps;
-};
+using Traced = cg::test::Traced<Slerp>;
 
-Traced run_traced(const Slerp::Input& in) {
-    Traced t;
-    auto s = Slerp::start(in);
-    while (!Slerp::done(s)) {
-        cg::StepInfo info;
-        Slerp::step(s, &info);
-        t.steps.push_back(info);
-    }
-    t.result = Slerp::result(s);
-    return t;
-}
+Traced run_traced(const Slerp::Input& in) { return cg::test::run_traced<Slerp>(in); }
 
 std::vector<std::string> events(const Traced& t) {
     std::vector<std::string> e;

@@ -7,6 +7,7 @@
 // picture; exam problems.
 #include <catch2/catch.hpp>
 
+#include "support/traced.hpp"
 #include "support/replay.hpp"
 
 #define GLM_ENABLE_EXPERIMENTAL
@@ -33,24 +34,8 @@ using V3 = std::array<ld, 3>;
 constexpr ld kPiL = 3.141592653589793238462643383279502884L;
 constexpr double kPi = 3.14159265358979323846;
 
-template <class A>
-struct Traced {
-    typename A::Result result;
-    std::vector<cg::StepInfo> steps;
-};
-
-template <class A>
-Traced<A> run_traced(const typename A::Input& in) {
-    Traced<A> t;
-    auto s = A::start(in);
-    while (!A::done(s)) {
-        cg::StepInfo info;
-        A::step(s, &info);
-        t.steps.push_back(info);
-    }
-    t.result = A::result(s);
-    return t;
-}
+using cg::test::run_traced;
+using cg::test::Traced;
 
 template <class A>
 std::vector<std::string> events(const Traced<A>& t) {

@@ -1,0 +1,30 @@
+// A run of one algorithm's state machine with every step narrated: the steps and the result,
+// for tests that check the narration and the numbers of one input.
+#pragma once
+
+#include <vector>
+
+#include "core/step.hpp"
+
+namespace cg::test {
+
+template <class A>
+struct Traced {
+    typename A::Result result;
+    std::vector<StepInfo> steps;
+};
+
+template <class A>
+Traced<A> run_traced(const typename A::Input& in) {
+    Traced<A> t;
+    auto s = A::start(in);
+    while (!A::done(s)) {
+        StepInfo info;
+        A::step(s, &info);
+        t.steps.push_back(info);
+    }
+    t.result = A::result(s);
+    return t;
+}
+
+}  // namespace cg::test
