@@ -10,30 +10,14 @@
 //           "attenuation"}, …], "v": [x, y, z]}
 #include "io/registry.hpp"
 #include "rays/phong_lighting.hpp"
+#include "rays/rays_json.hpp"
 
 namespace cg {
 
 namespace {
 
-using Color = PhongLighting::Color;
-
-Color color(const Reader& r, const char* key, bool& rgb) {
-    const json& v = r.get(key);
-    if (v.is_number()) {
-        const double x = as_number(v, r.field(key));
-        return Color(x);
-    }
-    if (v.is_array() && v.size() == 3) {
-        rgb = true;
-        return as_point3(v, r.field(key));
-    }
-    throw InputError(r.field(key), "must be a number or a colour [r, g, b], got " + describe(v));
-}
-
-json color_json(const Color& c, bool rgb, bool nice) {
-    if (!rgb) return nice ? nice_number(c.x) : json(c.x);
-    return nice ? nice_point(c) : to_json(c);
-}
+using rays_json::color;
+using rays_json::color_json;
 
 }  // namespace
 

@@ -250,6 +250,25 @@ QuadraticRoots solve_quadratic(const RayQuadratic& q) {
     return h;
 }
 
+double intersect_t(const PreparedQuadric& s, dvec3 origin, dvec3 direction, double t_min) {
+    const RayQuadratic q = ray_quadratic(s, origin, direction);
+    const QuadraticRoots roots = solve_quadratic(q);
+    for (int i = 0; i < roots.count; ++i) {
+        const double t = roots.t[i];
+        if (!(t > t_min)) continue;
+        const double z = q.origin.z + t * q.direction.z;
+        if (z < s.zmin || z > s.zmax) continue;
+        return t;
+    }
+    return Quadric::kInf;
+}
+
+dvec3 normal_at(const PreparedQuadric& s, dvec3 world_point) {
+    if (!s.transformed) return unit(gradient(s.f, world_point));
+    const dvec3 g = gradient(s.f, s.linear_inv * (world_point - s.translation));
+    return unit(g * s.linear_inv);
+}
+
 QuadricHit intersect(const Quadric& s, dvec3 origin, dvec3 direction, double t_min) {
     return intersect(prepare(s), origin, direction, t_min);
 }

@@ -146,6 +146,11 @@ QuadricHit intersect(const Quadric& s, glm::dvec3 origin, glm::dvec3 direction,
                      double t_min = kRayEpsilon);
 QuadricHit intersect(const PreparedQuadric& s, glm::dvec3 origin, glm::dvec3 direction,
                      double t_min = kRayEpsilon);
+// Only the hit's t (+inf at a miss): what a tracer's nearest-hit search needs of each object.
+double intersect_t(const PreparedQuadric& s, glm::dvec3 origin, glm::dvec3 direction,
+                   double t_min = kRayEpsilon);
+// The unit normal (∇F's direction, world space) at a world point on the surface; 0 where ∇F = 0.
+glm::dvec3 normal_at(const PreparedQuadric& s, glm::dvec3 world_point);
 
 // Helpers shared with the state machine.
 inline double eval_F(const QuadricCoefficients& f, glm::dvec3 p) {

@@ -1,5 +1,6 @@
 // Sections: [helpers] [spec] [validate] [advance] [narrate] [draw]
 #include "rays/ray_quadric.hpp"
+#include "rays/quadric_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -604,60 +605,6 @@ void RayQuadric::narrate(const State& s, StepInfo& info) {
 
 // ---- [draw] ---------------------------------------------------------------------------------
 
-namespace {
-
-double largest_param(const Quadric& q) {
-    switch (q.kind) {
-        case QuadricKind::Sphere:
-            return q.r;
-        case QuadricKind::Ellipsoid:
-        case QuadricKind::Hyperboloid:
-            return std::max({q.a, q.b, q.c});
-        case QuadricKind::Paraboloid:
-        case QuadricKind::Cylinder:
-            return std::max(q.p, q.q);
-        case QuadricKind::Cone:
-            return std::max({q.p, q.q, q.r});
-    }
-    return 1;
-}
-
-// The model-space point of the surface at angle φ around the z axis and height z (for the
-// closed surfaces, z is clamped to the surface's extent).
-dvec3 surface_point(const Quadric& q, double phi, double z) {
-    const double c = std::cos(phi), s = std::sin(phi);
-    switch (q.kind) {
-        case QuadricKind::Sphere: {
-            const double rho = std::sqrt(std::max(0.0, q.r * q.r - z * z));
-            return {rho * c, rho * s, z};
-        }
-        case QuadricKind::Ellipsoid: {
-            const double k = std::sqrt(std::max(0.0, 1 - z * z / (q.c * q.c)));
-            return {q.a * k * c, q.b * k * s, z};
-        }
-        case QuadricKind::Paraboloid: {
-            const double k = std::sqrt(std::max(0.0, z));
-            return {q.p * k * c, q.q * k * s, z};
-        }
-        case QuadricKind::Hyperboloid: {
-            const double k = std::sqrt(1 + z * z / (q.c * q.c));
-            return {q.a * k * c, q.b * k * s, z};
-        }
-        case QuadricKind::Cone: {
-            const double k = std::fabs(z) / q.r;
-            return {q.p * k * c, q.q * k * s, z};
-        }
-        case QuadricKind::Cylinder:
-            return {q.p * c, q.q * s, z};
-    }
-    return {0, 0, 0};
-}
-
-dvec3 to_world(const Quadric& q, dvec3 m) {
-    return dvec3(q.world_from_model * glm::dvec4(m, 1.0));
-}
-
-}  // namespace
 
 // 3D: the surface as a translucent mesh of quads in a box around the action, the model frame
 // when the quadric is transformed, the ray as an arrow, its roots, the hit and the normal.
@@ -678,62 +625,15 @@ void RayQuadric::draw(const State& s, Scene& scene) {
     t_end *= 1.2;
 
     // The surface's z range in model space: around the roots and the eye, within the slab.
+    double reach = 2 * L;
+    if (have_roots)
+        for (int i = 0; i < s.roots.count; ++i)
+            reach =
+                std::max(reach, 1.25 * std::fabs(model.origin.z + s.roots.t[i] * model.direction.z));
+    reach = std::min(reach, 50 * L);
     double z_lo, z_hi;
-    {
-        double reach = 2 * L;
-        if (have_roots)
-            for (int i = 0; i < s.roots.count; ++i)
-                reach = std::max(
-                    reach, 1.25 * std::fabs(model.origin.z + s.roots.t[i] * model.direction.z));
-        reach = std::min(reach, 50 * L);
-        switch (q.kind) {
-            case QuadricKind::Sphere:
-                z_lo = -q.r, z_hi = q.r;
-                break;
-            case QuadricKind::Ellipsoid:
-                z_lo = -q.c, z_hi = q.c;
-                break;
-            case QuadricKind::Paraboloid:
-                z_lo = 0, z_hi = reach;
-                break;
-            default:
-                z_lo = -reach, z_hi = reach;
-                break;
-        }
-        z_lo = std::max(z_lo, q.zmin);
-        z_hi = std::min(z_hi, q.zmax);
-    }
-    if (z_lo < z_hi) {
-        constexpr int kAround = 24, kAlong = 12;
-        const double two_pi = 6.283185307179586;
-        auto z_at = [&](int j) {
-            const double u = double(j) / kAlong;
-            if (q.kind == QuadricKind::Paraboloid) {  // even steps in √z: even rings
-                const double a = std::sqrt(z_lo), b = std::sqrt(z_hi);
-                return (a + u * (b - a)) * (a + u * (b - a));
-            }
-            if (q.kind == QuadricKind::Sphere || q.kind == QuadricKind::Ellipsoid) {
-                const double c = q.kind == QuadricKind::Sphere ? q.r : q.c;  // even in angle
-                const double a = std::acos(std::clamp(z_hi / c, -1.0, 1.0)),
-                             b = std::acos(std::clamp(z_lo / c, -1.0, 1.0));
-                return c * std::cos(a + u * (b - a));
-            }
-            return z_lo + u * (z_hi - z_lo);
-        };
-        for (int j = 0; j < kAlong; ++j) {
-            const double z0 = z_at(j), z1 = z_at(j + 1);
-            for (int i = 0; i < kAround; ++i) {
-                const double p0 = two_pi * i / kAround, p1 = two_pi * (i + 1) / kAround;
-                scene.faces3.push_back(
-                    {{to_world(q, surface_point(q, p0, z0)), to_world(q, surface_point(q, p1, z0)),
-                      to_world(q, surface_point(q, p1, z1)), to_world(q, surface_point(q, p0, z1))},
-                     {Role::Subject, 1.0f},
-                     0.18f,
-                     true,
-                     true});
-            }
-        }
-    }
+    drawn_z_range(q, reach, z_lo, z_hi);
+    add_quadric_mesh(q, z_lo, z_hi, {Role::Subject, 1.0f}, 0.18f, 24, 12, scene.faces3);
     if (s.phase != Phase::ToModel && s.prepared.transformed) {
         const glm::dmat4& m = q.world_from_model;
         scene.frames3.push_back({dvec3(m[3]), dvec3(m[0]), dvec3(m[1]), dvec3(m[2]), L, "M", 0.8f});
