@@ -1,5 +1,6 @@
 #include "cli.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -13,7 +14,9 @@
 #include "io/lesson.hpp"
 #include "io/registry.hpp"
 #include "io/worked.hpp"
+#include "rays/rt_scene_json.hpp"
 #include "viewer/app.hpp"
+#include "viewer/gl.hpp"
 
 namespace cg {
 
@@ -282,6 +285,63 @@ int cmd_render(const Registry& registry, const RenderOptions& o) {
     return 0;
 }
 
+struct SceneRenderOptions {
+    std::string scene_path, out_path, size;
+    int threads = 0;
+};
+
+// render-scene: the whole image with the plain tracer on every core, no display needed.
+int cmd_render_scene(const SceneRenderOptions& o) {
+    const std::string source = source_name(o.scene_path);
+    json j;
+    rt::Scene scene;
+    try {
+        j = parse_json(read_text_file(o.scene_path));
+        if (!o.size.empty()) {
+            int width = 0, height = 0;
+            char x = 0, extra = 0;
+            if (std::sscanf(o.size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 ||
+                x != 'x' || width < 1 || height < 1 ||
+                static_cast<long long>(width) * height > rt::kMaxPixels)
+                throw UserError{"", "--size must be WxH with W, H ≥ 1 and W·H ≤ 4096·4096, got \"" +
+                                        o.size + "\""};
+            if (j.is_object() && j.contains("camera") && j["camera"].is_object())
+                j["camera"]["size"] = {width, height};
+        }
+        scene = rt::scene_from_json(j, {"stepping"});
+    } catch (const InputError& e) {
+        fail(source, e);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const rt::Image img = rt::render(scene, o.threads);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    // PNG rows go top first; the image's row 0 is the bottom.
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(img.width) * img.height * 4);
+    for (int jj = 0; jj < img.height; ++jj)
+        for (int i = 0; i < img.width; ++i) {
+            const std::uint32_t v = img.rgba[static_cast<std::size_t>(jj) * img.width + i];
+            std::uint8_t* out =
+                &bytes[(static_cast<std::size_t>(img.height - 1 - jj) * img.width + i) * 4];
+            out[0] = v >> 24, out[1] = (v >> 16) & 0xff, out[2] = (v >> 8) & 0xff, out[3] = 0xff;
+        }
+    try {
+        viewer::write_png(o.out_path, img.width, img.height, bytes);
+    } catch (const std::exception&) {
+        throw UserError{o.out_path, "cannot write the PNG file"};
+    }
+    const rt::RayCounts& r = img.rays;
+    std::printf("%s: %d×%d, %llu rays (%llu primary, %llu shadow, %llu reflected, %llu refracted) "
+                "in %.3f s (%.2f M rays/s), checksum %s\n",
+                o.out_path.c_str(), img.width, img.height,
+                static_cast<unsigned long long>(r.total()), static_cast<unsigned long long>(r.primary),
+                static_cast<unsigned long long>(r.shadow), static_cast<unsigned long long>(r.reflected),
+                static_cast<unsigned long long>(r.refracted), seconds,
+                seconds > 0 ? r.total() / seconds / 1e6 : 0.0,
+                rt::image_checksum(img.rgba, img.width, img.height).c_str());
+    return 0;
+}
+
 }  // namespace
 
 int cli_main(int argc, char** argv) {
@@ -359,6 +419,16 @@ int cli_main(int argc, char** argv) {
     complexity->add_option("--polygons", counts, "Polygon counts (default 1 4 16)")->check(CLI::Range(0, 1000));
     complexity->add_option("--trials", trials, "Random scenes per row (default 5)")->check(CLI::Range(1, 1000));
 
+    SceneRenderOptions so;
+    auto* render_scene = app.add_subcommand(
+        "render-scene", "Ray trace a scene file to a PNG, on every core (no display needed)");
+    render_scene->add_option("SCENE", so.scene_path, "Scene JSON file (see the README), or - for stdin")
+        ->required();
+    render_scene->add_option("--out,-o", so.out_path, "Output PNG file")->required();
+    render_scene->add_option("--size", so.size, "Image size WxH (default: the scene's camera.size)");
+    render_scene->add_option("--threads", so.threads, "Threads (default: one per core)")
+        ->check(CLI::Range(0, 256));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -378,6 +448,7 @@ int cli_main(int argc, char** argv) {
         if (*worked) return cmd_worked(registry, wo);
         if (*exam) return cmd_exam(registry, eo);
         if (*lessons) return cmd_lessons(registry, check_lessons);
+        if (*render_scene) return cmd_render_scene(so);
         if (*complexity) {
             std::cout << hsr::complexity_table(hsr::complexity(sides, counts, trials, 1));
             return 0;

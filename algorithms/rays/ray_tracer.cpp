@@ -1,0 +1,847 @@
+// Sections: [spec] [validate and start] [the image rows] [stepping] [narration] [draw] [result]
+#include "rays/ray_tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "core/format.hpp"
+#include "rays/quadric_mesh.hpp"
+
+namespace cg {
+
+using glm::dvec2;
+using glm::dvec3;
+using rt::Color;
+using Event = RayTracer::Event;
+using RayKind = RayTracer::RayKind;
+using Next = RayTracer::Next;
+
+// ---- [spec] ---------------------------------------------------------------------------------
+
+const Spec& RayTracer::spec() {
+    static const Spec s{
+        "ray-tracer",
+        "Recursive ray tracing",
+        "Ray Tracing",
+        {
+            "for each pixel (i, j) of the virtual screen:",
+            "    primary ray E + t (P_ij − E), t > 0",
+            "    colour(i, j) ← trace(primary ray, depth 0)",
+            "trace(ray, depth):",
+            "    nearest hit P, normal n (t > ε); no hit: return the background",
+            "    c ← k_a I_a",
+            "    for each light L with n·l > 0: cast a shadow ray P → L",
+            "        unblocked: c += att (k_d (n·l) + k_s (r·v)^p) I_L",
+            "    if depth < max depth:",
+            "        c += k_r · trace(mirror ray r = d − 2 (d·n) n, depth + 1)",
+            "        c += k_t · trace(refracted ray (Snell), depth + 1)",
+            "    return c",
+        },
+        {
+            {"pixel", "a pixel's colour is computed (its whole ray tree)"},
+            {"row", "a row of pixels is computed"},
+            {"primary", "the primary ray from the eye through the pixel is cast"},
+            {"hit", "the nearest intersection: its point, normal and the ambient term"},
+            {"miss", "the ray hits nothing: it returns the background colour"},
+            {"lit", "the shadow ray reaches the light: its diffuse and specular terms are added"},
+            {"shadowed", "the shadow ray is blocked: the point is in this light's shadow"},
+            {"light-behind", "the light is behind the surface (n·l ≤ 0): it adds nothing"},
+            {"reflect", "a mirror ray is cast from the hit"},
+            {"refract", "a refracted ray is cast into or out of the material (Snell's law)"},
+            {"total-internal-reflection",
+             "no refracted ray exists (total internal reflection): the mirror ray takes its share"},
+            {"depth-limit", "the depth limit stops the secondary rays here"},
+            {"return", "a ray's colour is weighted and summed into the ray that cast it"},
+            {"colour", "the primary ray's colour is the pixel's colour"},
+        },
+    };
+    return s;
+}
+
+namespace {
+
+const char* event_id(Event e) {
+    static const char* ids[] = {"",
+                                "pixel",
+                                "row",
+                                "primary",
+                                "hit",
+                                "miss",
+                                "lit",
+                                "shadowed",
+                                "light-behind",
+                                "reflect",
+                                "refract",
+                                "total-internal-reflection",
+                                "depth-limit",
+                                "return",
+                                "colour"};
+    return ids[static_cast<int>(e)];
+}
+
+int event_line(Event e) {
+    switch (e) {
+        case Event::Pixel:
+        case Event::Row:
+        case Event::Colour:
+            return 3;
+        case Event::Primary:
+            return 2;
+        case Event::Hit:
+        case Event::Miss:
+            return 5;
+        case Event::Lit:
+            return 8;
+        case Event::Shadowed:
+        case Event::LightBehind:
+            return 7;
+        case Event::Reflect:
+            return 10;
+        case Event::Refract:
+        case Event::TotalInternal:
+            return 11;
+        case Event::DepthLimit:
+            return 9;
+        case Event::Return:
+            return 12;
+        case Event::None:
+            break;
+    }
+    return 0;
+}
+
+bool any_positive(const Color& c) {
+    return c.x > 0 || c.y > 0 || c.z > 0;
+}
+
+}  // namespace
+
+// ---- [validate and start] -------------------------------------------------------------------
+
+void RayTracer::validate(const Input& in) {
+    rt::validate(in.scene);
+    if (in.granularity != Granularity::RayTree) return;
+    if (in.explicit_ray) {
+        for (int k = 0; k < 3; ++k) {
+            if (!std::isfinite(in.ray_origin[k]) ||
+                std::fabs(in.ray_origin[k]) > rt::kMaxCoordinate)
+                throw InputError("stepping.ray.origin[" + std::to_string(k) + "]",
+                                 "must be a finite number of magnitude at most 1e12");
+            if (!std::isfinite(in.ray_direction[k]) ||
+                std::fabs(in.ray_direction[k]) > rt::kMaxCoordinate)
+                throw InputError("stepping.ray.direction[" + std::to_string(k) + "]",
+                                 "must be a finite number of magnitude at most 1e12");
+        }
+        const double m = std::max({std::fabs(in.ray_direction.x), std::fabs(in.ray_direction.y),
+                                   std::fabs(in.ray_direction.z)});
+        if (m == 0)
+            throw InputError("stepping.ray.direction",
+                             "must not be the zero vector: a ray needs a direction");
+        if (!(m >= 1e-150))
+            throw InputError("stepping.ray.direction",
+                             "is too short (largest component " + num(m) +
+                                 " < 1e-150): t is in units of the direction");
+        return;
+    }
+    const rt::Camera& c = in.scene.camera;
+    if (!(in.pixel.x >= 0 && in.pixel.x < c.width && in.pixel.y >= 0 && in.pixel.y < c.height))
+        throw InputError("stepping.pixel", "must lie on the " + std::to_string(c.width) + "×" +
+                                               std::to_string(c.height) +
+                                               " screen: 0 ≤ x < width, 0 ≤ y < height (got " +
+                                               num(in.pixel) + ")");
+}
+
+RayTracer::State RayTracer::start(const Input& in) {
+    validate(in);
+    State s;
+    s.in = Shared<Input>(in);
+    s.prepared = Shared<rt::Prepared>(rt::prepare(in.scene));
+    const rt::Camera& c = in.scene.camera;
+    if (in.granularity == Granularity::RayTree) {
+        s.pixel_i = std::min(static_cast<int>(std::floor(in.pixel.x)), c.width - 1);
+        s.pixel_j = std::min(static_cast<int>(std::floor(in.pixel.y)), c.height - 1);
+        // A small image is cheap to render whole: the picture shows the pixel inside it.
+        if (!in.explicit_ray && static_cast<long long>(c.width) * c.height <= 96 * 72)
+            s.preview = Shared<std::vector<std::uint32_t>>(rt::render(in.scene, 1).rgba);
+    } else {
+        s.image.reset(c.width, c.height);
+    }
+    return s;
+}
+
+// ---- [the image rows] -----------------------------------------------------------------------
+
+void RayTracer::Rows::reset(int width, int height) {
+    width_ = width;
+    const auto blank = std::make_shared<std::vector<std::uint32_t>>(width, 0u);
+    rows_.assign(height, blank);
+}
+
+void RayTracer::Rows::set(int i, int j, std::uint32_t v) {
+    auto& row = rows_[j];
+    if (row.use_count() != 1) row = std::make_shared<std::vector<std::uint32_t>>(*row);
+    (*row)[i] = v;
+}
+
+std::vector<std::uint32_t> RayTracer::Rows::pixels() const {
+    std::vector<std::uint32_t> out;
+    out.reserve(static_cast<std::size_t>(width_) * rows_.size());
+    for (const auto& r : rows_) out.insert(out.end(), r->begin(), r->end());
+    return out;
+}
+
+bool RayTracer::Rows::operator==(const Rows& o) const {
+    if (width_ != o.width_ || rows_.size() != o.rows_.size()) return false;
+    for (std::size_t j = 0; j < rows_.size(); ++j)
+        if (rows_[j] != o.rows_[j] && *rows_[j] != *o.rows_[j]) return false;
+    return true;
+}
+
+// ---- [stepping] -----------------------------------------------------------------------------
+
+void RayTracer::advance(State& s) {
+    const Input& in = *s.in;
+    const rt::Scene& sc = in.scene;
+    const int W = sc.camera.width, H = sc.camera.height;
+    switch (s.phase) {
+        case Phase::Start:
+            s.phase = in.granularity == Granularity::RayTree ? Phase::Tree : Phase::Pixels;
+            advance(s);
+            return;
+        case Phase::Pixels: {
+            const long long total = static_cast<long long>(W) * H;
+            if (in.granularity == Granularity::Rows) {
+                const int j = static_cast<int>(s.next_pixel / W);
+                for (int i = 0; i < W; ++i)
+                    s.image.set(i, j, rt::to_rgba8(rt::pixel_color(sc, *s.prepared, i, j, s.rays)));
+                s.last_i = -1, s.last_j = j;
+                s.next_pixel += W;
+                s.last_event = Event::Row;
+            } else {
+                const int i = static_cast<int>(s.next_pixel % W),
+                          j = static_cast<int>(s.next_pixel / W);
+                s.last_color = rt::pixel_color(sc, *s.prepared, i, j, s.rays);
+                s.image.set(i, j, rt::to_rgba8(s.last_color));
+                s.last_i = i, s.last_j = j;
+                ++s.next_pixel;
+                s.last_event = Event::Pixel;
+            }
+            if (s.next_pixel >= total) s.phase = Phase::Done;
+            return;
+        }
+        case Phase::Tree:
+            advance_tree(s);
+            return;
+        case Phase::Done:
+            return;
+    }
+}
+
+// One event of the ray tree. The arithmetic mirrors rt::trace() step for step (same operands,
+// same order), so the colour is the plain tracer's to the last bit.
+void RayTracer::advance_tree(State& s) {
+    const Input& in = *s.in;
+    const rt::Scene& sc = in.scene;
+    const rt::Prepared& p = *s.prepared;
+
+    if (s.tree.empty()) {  // the primary ray
+        RayNode n;
+        n.kind = RayKind::Primary;
+        if (in.explicit_ray) {
+            n.origin = in.ray_origin;
+            n.direction = in.ray_direction;
+        } else {
+            n.origin = p.view.eye;
+            n.direction = rt::screen_point(p.view, s.pixel_i + 0.5, s.pixel_j + 0.5) - p.view.eye;
+        }
+        s.tree.push_back(n);
+        s.stack.push_back({0, Next::Cast, 0, Color(0.0)});
+        ++s.rays.primary;
+        s.active = 0;
+        s.last_event = Event::Primary;
+        return;
+    }
+
+    for (;;) {  // until something a student should see happens
+        Frame& f = s.stack.back();
+        RayNode& ray = s.tree[f.node];
+        s.active = f.node;
+        switch (f.next) {
+            case Next::Cast: {
+                ray.hit = rt::nearest_hit(p, ray.origin, ray.direction);
+                ray.traced = true;
+                if (ray.hit.object < 0) {
+                    f.c = sc.background;
+                    f.next = Next::Return;
+                    s.last_event = Event::Miss;
+                    return;
+                }
+                const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
+                f.c = m.ka * sc.ambient;
+                f.next = Next::Light;
+                f.light = 0;
+                s.last_event = Event::Hit;
+                return;
+            }
+            case Next::Light: {
+                if (f.light >= static_cast<int>(sc.lights.size())) {
+                    f.next = Next::Secondary;
+                    continue;
+                }
+                const int k = f.light++;
+                const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
+                const dvec3 v = -unit(ray.direction);
+                s.last_term = rt::light_term(sc, sc.lights[k], m, ray.hit.point, ray.hit.normal, v);
+                const rt::LightTerm& lt = s.last_term;
+                if (!lt.facing) {
+                    s.last_event = Event::LightBehind;
+                    return;
+                }
+                if (sc.settings.shadows) {
+                    RayNode sh;
+                    sh.kind = RayKind::Shadow;
+                    sh.parent = f.node;
+                    sh.depth = ray.depth;
+                    sh.origin = rt::offset_point(p, ray.hit.point, ray.hit.normal);
+                    sh.direction = lt.l;
+                    sh.light = k;
+                    sh.t_max = lt.distance;
+                    sh.blocker =
+                        rt::first_blocker(p, sh.origin, sh.direction, kRayEpsilon, lt.distance);
+                    sh.traced = true;
+                    ++s.rays.shadow;
+                    const bool blocked = sh.blocker >= 0;
+                    if (!blocked) sh.color = lt.diffuse + lt.specular;
+                    s.active = static_cast<int>(s.tree.size());
+                    s.tree.push_back(sh);  // invalidates `ray`; f is still valid
+                    if (blocked) {
+                        s.last_event = Event::Shadowed;
+                        return;
+                    }
+                }
+                s.stack.back().c += lt.diffuse + lt.specular;
+                s.last_event = Event::Lit;
+                return;
+            }
+            case Next::Secondary:
+            case Next::Refract: {
+                const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
+                const bool wants_reflect = sc.settings.reflections && any_positive(m.kr);
+                const bool wants_refract = sc.settings.refractions && any_positive(m.kt);
+                if (ray.depth >= sc.settings.max_depth) {
+                    f.next = Next::Return;
+                    if (wants_reflect || wants_refract) {
+                        s.last_event = Event::DepthLimit;
+                        return;
+                    }
+                    continue;
+                }
+                const dvec3 dn = unit(ray.direction);
+                RayNode child;
+                child.parent = f.node;
+                child.depth = ray.depth + 1;
+                if (f.next == Next::Secondary) {
+                    f.next = Next::Refract;
+                    if (!wants_reflect) continue;
+                    child.kind = RayKind::Reflected;
+                    child.origin = rt::offset_point(p, ray.hit.point, ray.hit.normal);
+                    child.direction = rt::reflect(dn, ray.hit.normal);
+                    child.weight = m.kr;
+                    ++s.rays.reflected;
+                    s.last_event = Event::Reflect;
+                } else {
+                    f.next = Next::Return;
+                    if (!wants_refract) continue;
+                    const double eta = ray.hit.entering ? 1 / m.ior : m.ior;
+                    dvec3 t;
+                    child.weight = m.kt;
+                    if (rt::refract(dn, ray.hit.normal, eta, t)) {
+                        child.kind = RayKind::Refracted;
+                        child.origin = rt::offset_point(p, ray.hit.point, -ray.hit.normal);
+                        child.direction = t;
+                        ++s.rays.refracted;
+                        s.last_event = Event::Refract;
+                    } else {
+                        child.kind = RayKind::Reflected;
+                        child.total_internal = true;
+                        child.origin = rt::offset_point(p, ray.hit.point, ray.hit.normal);
+                        child.direction = rt::reflect(dn, ray.hit.normal);
+                        ++s.rays.reflected;
+                        s.last_event = Event::TotalInternal;
+                    }
+                }
+                const int id = static_cast<int>(s.tree.size());
+                s.tree.push_back(child);
+                s.stack.push_back({id, Next::Cast, 0, Color(0.0)});
+                s.active = id;
+                return;
+            }
+            case Next::Return: {
+                ray.color = f.c;
+                ray.returned = true;
+                const int node = f.node;
+                s.stack.pop_back();
+                s.active = node;
+                if (s.stack.empty()) {
+                    s.pixel_color = s.tree[0].color;
+                    s.phase = Phase::Done;
+                    s.last_event = Event::Colour;
+                    return;
+                }
+                s.stack.back().c += s.tree[node].weight * s.tree[node].color;
+                s.last_event = Event::Return;
+                return;
+            }
+        }
+    }
+}
+
+void RayTracer::step(State& s, StepInfo* info) {
+    if (s.phase == Phase::Done) return;
+    advance(s);
+    if (info) narrate(s, *info);
+}
+
+// ---- [narration] ----------------------------------------------------------------------------
+
+namespace {
+
+const char* kind_name(RayKind k) {
+    switch (k) {
+        case RayKind::Primary:
+            return "primary";
+        case RayKind::Shadow:
+            return "shadow";
+        case RayKind::Reflected:
+            return "mirror";
+        case RayKind::Refracted:
+            return "refracted";
+    }
+    return "";
+}
+
+std::string object_name(const rt::Scene& sc, int k) {
+    return k < 0 ? std::string("nothing") : sc.objects[k].name;
+}
+
+std::vector<double> colour_vec(const Color& c) {
+    return {c.x, c.y, c.z};
+}
+
+std::string rgb8_text(std::uint32_t v) {
+    return "(" + std::to_string(v >> 24) + ", " + std::to_string((v >> 16) & 0xff) + ", " +
+           std::to_string((v >> 8) & 0xff) + ")";
+}
+
+// The ray's name in the tree: R0 for the primary ray, then S/M/T with its index.
+std::string ray_label(const std::vector<RayTracer::RayNode>& tree, int k) {
+    const RayTracer::RayNode& n = tree[k];
+    const char* letter = n.kind == RayKind::Primary     ? "R"
+                         : n.kind == RayKind::Shadow    ? "S"
+                         : n.kind == RayKind::Reflected ? "M"
+                                                        : "T";
+    return letter + std::to_string(k);
+}
+
+}  // namespace
+
+void RayTracer::narrate(const State& s, StepInfo& info) {
+    const Input& in = *s.in;
+    const rt::Scene& sc = in.scene;
+    info.event = event_id(s.last_event);
+    info.line = event_line(s.last_event);
+    auto add = [&](std::string name, Value v) {
+        info.vars.push_back({std::move(name), std::move(v)});
+    };
+    switch (s.last_event) {
+        case Event::Pixel: {
+            const std::uint32_t v = s.image.get(s.last_i, s.last_j);
+            info.narration = "Pixel (" + std::to_string(s.last_i) + ", " +
+                             std::to_string(s.last_j) + "): colour " + num(s.last_color, 4) +
+                             ", stored as " + rgb8_text(v) + ".";
+            add("pixel", std::vector<double>{double(s.last_i), double(s.last_j)});
+            add("colour", colour_vec(s.last_color));
+            add("rays so far", static_cast<long long>(s.rays.total()));
+            return;
+        }
+        case Event::Row:
+            info.narration = "Row " + std::to_string(s.last_j) + " of " +
+                             std::to_string(sc.camera.height) + " computed (" +
+                             std::to_string(s.rays.total()) + " rays so far).";
+            add("row", static_cast<long long>(s.last_j));
+            add("rays so far", static_cast<long long>(s.rays.total()));
+            return;
+        case Event::None:
+            return;
+        default:
+            break;
+    }
+    const RayNode& n = s.tree[s.active];
+    const std::string name = ray_label(s.tree, s.active);
+    add("ray", name + " (" + kind_name(n.kind) + ")");
+    add("depth", static_cast<long long>(n.depth));
+    add("origin", vec(n.origin));
+    add("direction", vec(n.direction));
+    switch (s.last_event) {
+        case Event::Primary:
+            if (in.explicit_ray)
+                info.narration = "The primary ray " + name +
+                                 ": E + t d with E = " + num(n.origin, 4) +
+                                 ", d = " + num(n.direction, 4) + ".";
+            else
+                info.narration =
+                    "Pixel (" + std::to_string(s.pixel_i) + ", " + std::to_string(s.pixel_j) +
+                    "): its centre on the screen is P = " + num(n.origin + n.direction, 4) +
+                    "; the primary ray " + name + " is E + t (P − E) with E = " + num(n.origin, 4) +
+                    ", P − E = " + num(n.direction, 4) + ".";
+            info.math = "E + t\\,(P - E),\\; t > 0";
+            break;
+        case Event::Miss:
+            info.narration = "Ray " + name + " hits nothing: it returns the background " +
+                             num(sc.background, 4) + ".";
+            break;
+        case Event::Hit: {
+            const rt::Material& m = sc.materials[s.prepared->objects[n.hit.object].material];
+            info.narration =
+                "Ray " + name + " first hits " + object_name(sc, n.hit.object) +
+                " at t = " + num(n.hit.t, 6) + ": P = " + num(n.hit.point, 4) +
+                ", n = " + num(n.hit.normal, 4) +
+                (n.hit.entering ? "" : " (from inside: the normal is turned to face the ray)") +
+                ". Material " + m.name + "; ambient k_a I_a = " + num(m.ka * sc.ambient, 4) + ".";
+            info.math = "c = k_a I_a = " + tex(m.ka * sc.ambient, 4);
+            add("object", object_name(sc, n.hit.object));
+            add("t", n.hit.t);
+            add("P", vec(n.hit.point));
+            add("n", vec(n.hit.normal));
+            break;
+        }
+        case Event::Lit:
+        case Event::Shadowed:
+        case Event::LightBehind: {
+            const rt::LightTerm& lt = s.last_term;
+            const RayNode& hit_ray = n.kind == RayKind::Shadow ? s.tree[n.parent] : n;
+            const int k = n.kind == RayKind::Shadow ? n.light : s.stack.back().light - 1;
+            const std::string L = "light " + std::to_string(k);
+            if (s.last_event == Event::LightBehind)
+                info.narration = L + " is behind the surface at " + num(hit_ray.hit.point, 4) +
+                                 " (n·l = " + num(lt.n_dot_l, 4) +
+                                 " ≤ 0): no shadow ray, no light.";
+            else if (s.last_event == Event::Shadowed)
+                info.narration = "Shadow ray " + name + " toward " + L + " is blocked by " +
+                                 object_name(sc, n.blocker) + ": the point is in its shadow.";
+            else
+                info.narration = (sc.settings.shadows ? "Shadow ray " + name + " reaches " + L
+                                                      : L + " (shadows off)") +
+                                 ": n·l = " + num(lt.n_dot_l, 4) + ", attenuation " +
+                                 num(lt.attenuation, 4) + ", diffuse " + num(lt.diffuse, 4) +
+                                 ", specular " + num(lt.specular, 4) + " are added.";
+            add("l", vec(lt.l));
+            add("n·l", lt.n_dot_l);
+            add(sc.settings.model == rt::Model::Phong ? "r·v" : "h·n", lt.spec_dot);
+            add("attenuation", lt.attenuation);
+            if (s.last_event == Event::Lit) {
+                add("diffuse", colour_vec(lt.diffuse));
+                add("specular", colour_vec(lt.specular));
+            }
+            info.math = "k_d (n \\cdot l) = " + tex(lt.n_dot_l, 4) +
+                        ",\\; \\mathrm{att} = " + tex(lt.attenuation, 4);
+            break;
+        }
+        case Event::Reflect:
+        case Event::TotalInternal:
+            info.narration = std::string(s.last_event == Event::TotalInternal
+                                             ? "No refracted ray: total internal reflection. "
+                                             : "") +
+                             "Mirror ray " + name + ": r = d − 2 (d·n) n = " + num(n.direction, 4) +
+                             ", weighted by " + num(n.weight, 4) + ".";
+            info.math = "r = d - 2\\,(d \\cdot n)\\,n = " + tex(n.direction, 4);
+            add("weight", colour_vec(n.weight));
+            break;
+        case Event::Refract: {
+            const RayNode& parent = s.tree[n.parent];
+            const rt::Material& m = sc.materials[s.prepared->objects[parent.hit.object].material];
+            const double eta = parent.hit.entering ? 1 / m.ior : m.ior;
+            const double cos1 = -glm::dot(unit(parent.direction), parent.hit.normal);
+            const double cos2 = -glm::dot(n.direction, parent.hit.normal);
+            info.narration = "Refracted ray " + name +
+                             (parent.hit.entering ? " enters " : " leaves ") + m.name +
+                             " (η = " + num(eta, 4) + "): cos θ₁ = " + num(cos1, 4) +
+                             ", cos θ₂ = " + num(cos2, 4) + ", t = " + num(n.direction, 4) +
+                             ", weighted by " + num(n.weight, 4) + ".";
+            info.math =
+                "\\eta_1 \\sin\\theta_1 = \\eta_2 \\sin\\theta_2,\\; \\eta = " + tex(eta, 4);
+            add("eta", eta);
+            add("cos θ1", cos1);
+            add("cos θ2", cos2);
+            add("weight", colour_vec(n.weight));
+            break;
+        }
+        case Event::DepthLimit:
+            info.narration = "Ray " + name + " is at depth " + std::to_string(n.depth) +
+                             " = the limit: no mirror or refracted rays from here.";
+            break;
+        case Event::Return: {
+            const RayNode& parent = s.tree[n.parent];
+            info.narration = "Ray " + name + " returns " + num(n.color, 4) + "; × " +
+                             num(n.weight, 4) + " is added to " + ray_label(s.tree, n.parent) +
+                             ", whose colour so far is " + num(s.stack.back().c, 4) + ".";
+            (void)parent;
+            add("returned", colour_vec(n.color));
+            add("weight", colour_vec(n.weight));
+            break;
+        }
+        case Event::Colour:
+            info.narration = "The primary ray returns " + num(s.pixel_color, 4) +
+                             ": the pixel's colour, stored as " +
+                             rgb8_text(rt::to_rgba8(s.pixel_color)) +
+                             " (clamped to [0, 1], × 255).";
+            break;
+        default:
+            break;
+    }
+    if (!s.stack.empty()) add("c (so far)", colour_vec(s.stack.back().c));
+    add("rays cast", static_cast<long long>(s.rays.total()));
+}
+
+// ---- [draw] ---------------------------------------------------------------------------------
+
+namespace {
+
+std::uint32_t rgba_of(const Color& c, double alpha) {
+    return (rt::to_rgba8(c) & 0xffffff00u) | static_cast<std::uint32_t>(std::lround(255 * alpha));
+}
+
+// The scene's size: for the picture's extent and for cutting unbounded surfaces.
+double scene_extent(const rt::Scene& sc) {
+    double e = glm::length(sc.camera.eye - sc.camera.center);
+    for (const rt::Light& l : sc.lights)
+        if (!l.directional) e = std::max(e, glm::length(l.position - sc.camera.center));
+    return std::max(e, 1e-6);
+}
+
+void draw_objects(const rt::Scene& sc, double extent, Scene& scene) {
+    constexpr std::size_t kMaxDrawnTriangles = 4000;
+    std::size_t triangles = 0;
+    for (const rt::Object& o : sc.objects) {
+        const rt::Material& m = sc.materials[o.material];
+        // The surface's own colour, toward pale blue when it is transparent and toward grey
+        // when it is a mirror, so glass and mirrors do not draw black.
+        Color look = m.kd + 0.3 * m.ks;
+        const double t = std::min(1.0, std::max({m.kt.x, m.kt.y, m.kt.z}));
+        const double r = std::min(1.0, std::max({m.kr.x, m.kr.y, m.kr.z}));
+        look = (1 - t) * look + t * Color(0.6, 0.8, 1.0);
+        look = (1 - r) * look + r * Color(0.7);
+        const Style style{Role::Subject, 1.0f, false, rgba_of(look, 1)};
+        switch (o.kind) {
+            case rt::ObjectKind::Quadric: {
+                const double L = largest_param(o.quadric);
+                double z_lo, z_hi;
+                drawn_z_range(o.quadric, std::min(extent, 50 * L), z_lo, z_hi);
+                add_quadric_mesh(o.quadric, z_lo, z_hi, style, 0.35f, 20, 10, scene.faces3);
+                break;
+            }
+            case rt::ObjectKind::Plane: {
+                // A square of the plane around the point nearest the look-at centre.
+                const dvec3 n = unit(o.normal);
+                const dvec3 c = sc.camera.center - glm::dot(sc.camera.center - o.p0, n) * n;
+                const dvec3 a = unit(std::fabs(n.x) < 0.9 ? glm::cross(n, dvec3(1, 0, 0))
+                                                          : glm::cross(n, dvec3(0, 1, 0)));
+                const dvec3 b = glm::cross(n, a);
+                const double h = 0.6 * extent;
+                scene.faces3.push_back(
+                    {{c - h * a - h * b, c + h * a - h * b, c + h * a + h * b, c - h * a + h * b},
+                     style,
+                     0.25f,
+                     true,
+                     true});
+                break;
+            }
+            case rt::ObjectKind::Triangle:
+                if (++triangles > kMaxDrawnTriangles) break;
+                scene.faces3.push_back({{o.p0, o.p1, o.p2}, style, 0.5f, true, true});
+                break;
+        }
+    }
+    if (triangles > kMaxDrawnTriangles)
+        scene.labels3.push_back({sc.camera.center,
+                                 std::to_string(triangles) + " triangles: the first " +
+                                     std::to_string(kMaxDrawnTriangles) + " drawn",
+                                 {Role::Construction}});
+    for (std::size_t k = 0; k < sc.lights.size(); ++k) {
+        const rt::Light& l = sc.lights[k];
+        const std::string name = "light " + std::to_string(k);
+        if (l.directional) {
+            const dvec3 from = sc.camera.center - 0.8 * extent * unit(l.direction);
+            scene.segments3.push_back({from,
+                                       from + 0.3 * extent * unit(l.direction),
+                                       name,
+                                       {Role::Active, 2.0f, true},
+                                       true});
+        } else {
+            scene.points3.push_back({l.position, name, {Role::Active}, 7.0f});
+        }
+    }
+}
+
+// The eye and the virtual screen (at distance 1 along the view direction), and the pixel.
+void draw_camera(const rt::Prepared& p, int i, int j, Scene& scene) {
+    const rt::View& v = p.view;
+    const dvec3 c00 = rt::screen_point(v, 0, 0), c10 = rt::screen_point(v, v.width, 0),
+                c11 = rt::screen_point(v, v.width, v.height),
+                c01 = rt::screen_point(v, 0, v.height);
+    scene.points3.push_back({v.eye, "E", {Role::Neutral}, 6.0f});
+    scene.faces3.push_back({{c00, c10, c11, c01}, {Role::Window, 1.0f}, 0.08f, true, true});
+    if (i >= 0 && j >= 0)
+        scene.faces3.push_back({{rt::screen_point(v, i, j), rt::screen_point(v, i + 1, j),
+                                 rt::screen_point(v, i + 1, j + 1), rt::screen_point(v, i, j + 1)},
+                                {Role::Active, 1.5f},
+                                0.9f,
+                                true,
+                                true});
+}
+
+Role ray_role(const RayTracer::RayNode& n) {
+    switch (n.kind) {
+        case RayKind::Primary:
+            return Role::Active;
+        case RayKind::Shadow:
+            return n.blocker >= 0 ? Role::Discarded : Role::Kept;
+        case RayKind::Reflected:
+            return Role::Entering;
+        case RayKind::Refracted:
+            return Role::Leaving;
+    }
+    return Role::Neutral;
+}
+
+void draw_tree(const RayTracer::State& s, double extent, Scene& scene) {
+    const rt::Scene& sc = s.in->scene;
+    for (std::size_t k = 0; k < s.tree.size(); ++k) {
+        const RayTracer::RayNode& n = s.tree[k];
+        const std::string label = ray_label(s.tree, static_cast<int>(k));
+        const bool active = static_cast<int>(k) == s.active;
+        const float width = active ? 3.0f : 1.8f;
+        const dvec3 d = unit(n.direction);
+        if (n.kind == RayKind::Shadow) {
+            const rt::Light& l = sc.lights[n.light];
+            const dvec3 end = l.directional ? n.origin + 0.6 * extent * d : l.position;
+            if (n.blocker >= 0) {
+                const double t = rt::intersect_object(s.prepared->objects[n.blocker], n.origin,
+                                                      n.direction, kRayEpsilon);
+                const dvec3 stop = n.origin + t * n.direction;
+                scene.segments3.push_back({n.origin, stop, label, {Role::Discarded, width}, true});
+                scene.segments3.push_back({stop, end, "", {Role::Construction, 1.0f, true}, false});
+                scene.points3.push_back({stop, "", {Role::Discarded}, 4.0f});
+            } else {
+                scene.segments3.push_back({n.origin, end, label, {Role::Kept, width, true}, true});
+            }
+            continue;
+        }
+        if (!n.traced) {  // cast, its hit not yet found: an arrow into the scene
+            scene.segments3.push_back(
+                {n.origin, n.origin + 0.5 * extent * d, label, {ray_role(n), width, true}, true});
+            continue;
+        }
+        if (n.hit.object < 0) {
+            scene.segments3.push_back({n.origin,
+                                       n.origin + 1.5 * extent * d,
+                                       label + " (miss)",
+                                       {ray_role(n), width},
+                                       true});
+            continue;
+        }
+        scene.segments3.push_back({n.origin, n.hit.point, label, {ray_role(n), width}, true});
+        scene.points3.push_back({n.hit.point, "", {ray_role(n)}, 5.0f});
+        scene.segments3.push_back({n.hit.point,
+                                   n.hit.point + 0.12 * extent * n.hit.normal,
+                                   active ? "n" : "",
+                                   {Role::Neutral, 1.5f},
+                                   true});
+        if (n.returned && (active || k == 0))
+            scene.labels3.push_back({n.hit.point, num(n.color, 3), {Role::Neutral}});
+    }
+}
+
+}  // namespace
+
+// 2D: the image (the pixel being computed outlined). 3D: the scene's objects and lights, the eye
+// and the virtual screen, and the pixel's rays (ray-tree: the whole tree so far).
+void RayTracer::draw(const State& s, Scene& scene) {
+    const Input& in = *s.in;
+    const rt::Scene& sc = in.scene;
+    const int W = sc.camera.width, H = sc.camera.height;
+    const double extent = scene_extent(sc);
+
+    PixelGrid2 grid;
+    grid.width = W;
+    grid.height = H;
+    grid.grid_lines = W * H <= 128 * 96;
+    int hi = -1, hj = -1;  // the highlighted pixel
+    if (in.granularity == Granularity::RayTree) {
+        if (!s.preview->empty()) {
+            grid.rgba = *s.preview;
+            for (auto& v : grid.rgba) v = (v & 0xffffff00u) | 0x60u;  // dimmed: not computed here
+        } else {
+            grid.rgba.assign(static_cast<std::size_t>(W) * H, 0u);
+        }
+        if (!in.explicit_ray) {
+            hi = s.pixel_i, hj = s.pixel_j;
+            if (s.phase == Phase::Done)
+                grid.rgba[static_cast<std::size_t>(hj) * W + hi] = rt::to_rgba8(s.pixel_color);
+            scene.handles.push_back({{s.pixel_i + 0.5, s.pixel_j + 0.5},
+                                     "pixel",
+                                     "/stepping/pixel/0",
+                                     "/stepping/pixel/1"});
+        }
+    } else {
+        grid.rgba = s.image.pixels();
+        hi = s.last_i, hj = s.last_j;
+    }
+    scene.grids.push_back(std::move(grid));
+    if (hj >= 0) {
+        const double x0 = hi >= 0 ? hi : 0, x1 = hi >= 0 ? hi + 1 : W;
+        scene.polygons.push_back({{{x0, hj}, {x1, hj}, {x1, hj + 1.0}, {x0, hj + 1.0}},
+                                  {Role::Active, 2.5f},
+                                  true,
+                                  false});
+    }
+    scene.labels.push_back(
+        {{0, H + 0.6}, std::to_string(W) + " × " + std::to_string(H) + " pixels", {Role::Neutral}});
+
+    draw_objects(sc, extent, scene);
+    draw_camera(*s.prepared, hi, hj, scene);
+    if (in.granularity == Granularity::RayTree) {
+        draw_tree(s, extent, scene);
+    } else if (s.last_i >= 0) {  // the last pixel's primary ray, to its hit
+        const rt::Prepared& p = *s.prepared;
+        const dvec3 P = rt::screen_point(p.view, s.last_i + 0.5, s.last_j + 0.5);
+        const rt::Hit h = rt::nearest_hit(p, p.view.eye, P - p.view.eye);
+        const dvec3 end =
+            h.object >= 0 ? h.point : p.view.eye + 1.5 * extent * unit(P - p.view.eye);
+        scene.segments3.push_back({p.view.eye, end, "", {Role::Active, 2.0f}, true});
+    }
+    scene.extent3 = 0.6 * extent;
+}
+
+// ---- [result] -------------------------------------------------------------------------------
+
+RayTracer::Result RayTracer::result(const State& s) {
+    Result r;
+    r.granularity = s.in->granularity;
+    r.width = s.in->scene.camera.width;
+    r.height = s.in->scene.camera.height;
+    r.rays = s.rays;
+    if (r.granularity == Granularity::RayTree) {
+        r.explicit_ray = s.in->explicit_ray;
+        r.pixel_i = s.pixel_i;
+        r.pixel_j = s.pixel_j;
+        r.color = s.pixel_color;
+        r.tree = s.tree;
+    } else {
+        r.image = s.image.pixels();
+    }
+    return r;
+}
+
+}  // namespace cg

@@ -1,0 +1,229 @@
+// A ray tracer's world: camera, lights, materials and objects, and the plain recursive tracer
+// over it (Whitted's: shadows, mirror reflection and refraction, to a depth limit).
+//
+// The course's setting: an eye E and a virtual screen of pixels in front of it; the ray through
+// pixel (i, j) is E + t (P − E), t > 0, P the pixel's centre on the screen. At the nearest hit
+// the point is shaded with the Phong or Blinn-Phong model (rays/phong_lighting.hpp's formulas),
+// counting a light only when a shadow ray from the point to the light reaches it unblocked;
+// then secondary rays are cast in the mirror direction and, through transparent material, in
+// the refracted direction, and their colours are added, weighted by the material's kr and kt:
+//
+//   colour(ray) = k_a I_a + Σ_visible lights  att_i I_i (k_d (l_i·n) + k_s S_i)
+//               + k_r colour(reflected ray) + k_t colour(refracted ray)      (depth < limit)
+//
+// A ray that hits nothing returns the background colour. Ray casting is the same tracer with
+// no secondary rays at all: depth limit 0 and no shadow rays.
+//
+// Conventions. World space is right-handed. The camera looks from `eye` toward `center`;
+// w = (center − eye)/|center − eye| is the view direction, u = w × up (right), v = u × w (up):
+// the screen is the rectangle at distance 1 along w, 2 tan(fov_y/2) tall and `aspect` times
+// as wide. Pixel (i, j) is column i from the left and row j from the BOTTOM (y up, the
+// project's pixel convention), its centre at (i + ½, j + ½) in pixel units; an image file is
+// written top row first. The primary ray's direction is d = P − E (so t = 1 on the screen);
+// secondary rays have unit directions. Normals: a quadric's along ∇F (rays/quadric.hpp), a
+// plane's as given, a triangle's (p1 − p0) × (p2 − p0) (its vertices counter-clockwise seen
+// from the front); for shading the normal is turned to face the incoming ray, and a ray that
+// met the geometric normal head-on (d·n ≤ 0) is entering the solid. Refraction (Snell's law,
+// η₁ sin θ₁ = η₂ sin θ₂) bends a ray entering a material of index `ior` from the outside
+// (index 1) by η = 1/ior, and a leaving one by η = ior; when η sin θ₁ > 1 there is no
+// refracted ray (total internal reflection) and the transmitted share kt goes to the mirror
+// ray instead. Colours are linear r, g, b; a pixel's 8-bit value is round(255 clamp(c, 0, 1)).
+// Secondary rays start a small distance off the surface along the normal (on the side they
+// travel into), so they do not hit the surface they leave. Shadow rays treat every object as
+// opaque (a glass ball casts a full shadow), as the course's tracer does. A point light's
+// attenuation 1/(c1 + c2 r + c3 r²) is capped at 10⁶, so a light touching a surface stays finite.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "rays/quadric.hpp"
+
+namespace cg::rt {
+
+using Color = glm::dvec3;
+
+struct Material {
+    std::string name;
+    Color ka{0.1}, kd{0.7}, ks{0.3};  // ambient, diffuse, specular coefficients, ≥ 0
+    double shininess = 20;            // p ≥ 0
+    Color kr{0.0};                    // share of the mirror ray's colour, ≥ 0
+    Color kt{0.0};                    // share of the refracted ray's colour, ≥ 0
+    double ior = 1.0;                 // refraction index inside the object, > 0
+    bool operator==(const Material&) const = default;
+};
+
+struct Light {
+    bool directional = false;
+    glm::dvec3 position{0.0};         // a point light's position
+    glm::dvec3 direction{0.0};        // a directional light's direction of travel
+    Color intensity{1.0};             // I_i, ≥ 0
+    glm::dvec3 attenuation{1, 0, 0};  // c1, c2, c3 (point lights)
+    bool operator==(const Light&) const = default;
+};
+
+enum class ObjectKind : std::uint8_t { Quadric, Plane, Triangle };
+
+struct Object {
+    ObjectKind kind = ObjectKind::Quadric;
+    std::string name;   // as given, or "objects[3]" / "objects[3].triangles[5]"
+    std::string field;  // where the object is in the input, for errors: "objects[3]"
+    int material = 0;   // index into Scene::materials
+    Quadric quadric;    // Quadric
+    glm::dvec3 p0{0.0}, p1{0.0}, p2{0.0};  // Triangle vertices; Plane: p0 is a point on it
+    glm::dvec3 normal{0, 0, 1};            // Plane: as given (any length > 0)
+    bool operator==(const Object&) const = default;
+};
+
+struct Camera {
+    glm::dvec3 eye{0, 0, 5}, center{0, 0, 0}, up{0, 1, 0};
+    double fov_y_deg = 45;        // vertical field of view, degrees, in (0, 180)
+    int width = 64, height = 48;  // pixels
+    bool operator==(const Camera&) const = default;
+};
+
+enum class Model : std::uint8_t { Phong, BlinnPhong };
+
+struct Settings {
+    int max_depth = 3;  // reflection/refraction depth limit: 0 casts no secondary rays
+    bool shadows = true, reflections = true, refractions = true;
+    Model model = Model::Phong;
+    bool operator==(const Settings&) const = default;
+};
+
+struct Scene {
+    Camera camera;
+    Settings settings;
+    Color background{0.0};
+    Color ambient{0.1};  // I_a
+    std::vector<Material> materials;
+    std::vector<Light> lights;
+    std::vector<Object> objects;
+    bool operator==(const Scene&) const = default;
+};
+
+// Limits, so that an input cannot make a run exhaust the machine; refused with a clear error.
+constexpr long long kMaxPixels = 4096LL * 4096;
+constexpr int kMaxDepth = 16;
+constexpr std::size_t kMaxObjects = 20000;
+constexpr std::size_t kMaxLights = 64;
+constexpr double kMaxCoordinate = 1e12;  // |coordinates| and scene sizes stay below this
+constexpr double kMaxAttenuation = 1e6;  // 1/(c1 + c2 r + c3 r²) is capped here (a light at r = 0)
+
+// Throws InputError naming the field ("camera.fov_y_deg", "objects[2].material",
+// "lights[0].attenuation"). Fields are named as in the JSON scene format (rt_scene_json.hpp).
+void validate(const Scene& s);
+
+// ---- what the tracer needs, computed once per scene -------------------------------------
+
+struct PreparedObject {
+    ObjectKind kind = ObjectKind::Quadric;
+    int material = 0;
+    PreparedQuadric quadric;
+    glm::dvec3 p0{0.0}, e1{0.0}, e2{0.0};  // a triangle's p0, p1 − p0, p2 − p0
+    glm::dvec3 normal{0.0};                // a plane's or triangle's unit normal
+    bool operator==(const PreparedObject&) const = default;
+};
+
+// The camera's look-at frame and the screen's half sizes.
+struct View {
+    glm::dvec3 eye{0.0}, u{1, 0, 0}, v{0, 1, 0}, w{0, 0, -1};
+    double half_height = 1, half_width = 1;
+    int width = 1, height = 1;
+    bool operator==(const View&) const = default;
+};
+
+struct Prepared {
+    View view;
+    std::vector<PreparedObject> objects;
+    double epsilon = 1e-9;  // the offset of secondary rays, scaled to the scene's size
+    bool operator==(const Prepared&) const = default;
+};
+// Precondition: validate(s) does not throw.
+Prepared prepare(const Scene& s);
+
+View make_view(const Camera& c);
+// The point of pixel coordinates (x, y) (pixel units from the screen's bottom-left corner; the
+// centre of pixel (i, j) is (i + ½, j + ½)) on the screen, and the primary ray's d = P − E.
+glm::dvec3 screen_point(const View& v, double x, double y);
+
+struct Hit {
+    int object = -1;  // -1: nothing hit
+    double t = 0;
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0};  // unit, turned to face the ray (−d side)
+    bool entering = true;    // the ray met the geometric normal head-on: it enters the solid
+    bool operator==(const Hit&) const = default;
+};
+
+// The nearest hit with t > t_min (and t < t_max) over every object.
+Hit nearest_hit(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
+                double t_min = kRayEpsilon, double t_max = Quadric::kInf);
+// Whether anything lies on the ray at t_min < t < t_max (a shadow ray's test): the first
+// object found, or -1.
+int first_blocker(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, double t_min,
+                  double t_max);
+// The hit's t with one object (or +inf), and its normal there: the pieces of nearest_hit.
+double intersect_object(const PreparedObject& o, glm::dvec3 origin, glm::dvec3 direction,
+                        double t_min);
+glm::dvec3 object_normal(const PreparedObject& o, glm::dvec3 point);
+
+// ---- shading and the secondary rays (shared by the plain tracer and the state machine) ----
+
+// What one light does at a hit: its direction, distance and attenuation, and, if it is in
+// front of the surface, its diffuse and specular terms (the shadow test decides whether they
+// are added).
+struct LightTerm {
+    glm::dvec3 l{0.0};                // unit, toward the light
+    double distance = Quadric::kInf;  // to a point light; +inf for a directional one
+    double attenuation = 1;
+    double n_dot_l = 0;
+    double spec_dot = 0;  // r·v (Phong) or h·n (Blinn-Phong), raw
+    Color diffuse{0.0}, specular{0.0};
+    bool facing = false;  // n·l > 0: the light is in front of the surface
+    bool operator==(const LightTerm&) const = default;
+};
+LightTerm light_term(const Scene& s, const Light& light, const Material& m, glm::dvec3 point,
+                     glm::dvec3 n, glm::dvec3 v);
+// The shadow ray's start: the hit point nudged off the surface toward the light.
+glm::dvec3 offset_point(const Prepared& p, glm::dvec3 point, glm::dvec3 toward);
+
+// Mirror direction of a unit d about the unit n (n facing −d): r = d − 2 (d·n) n.
+glm::dvec3 reflect(glm::dvec3 d, glm::dvec3 n);
+// Refracted unit direction by Snell's law for unit d and unit n facing −d, η = η₁/η₂; false at
+// total internal reflection (η² (1 − cos²θ₁) > 1).
+bool refract(glm::dvec3 d, glm::dvec3 n, double eta, glm::dvec3& out);
+
+// How many rays of each kind a trace cast.
+struct RayCounts {
+    std::uint64_t primary = 0, shadow = 0, reflected = 0, refracted = 0;
+    std::uint64_t total() const { return primary + shadow + reflected + refracted; }
+    RayCounts& operator+=(const RayCounts& o) {
+        primary += o.primary, shadow += o.shadow, reflected += o.reflected,
+            refracted += o.refracted;
+        return *this;
+    }
+    bool operator==(const RayCounts&) const = default;
+};
+
+// ---- the plain tracer ---------------------------------------------------------------------
+
+// The colour a ray returns; `depth` is how many reflections/refractions led to it.
+Color trace(const Scene& s, const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, int depth,
+            RayCounts& counts);
+Color pixel_color(const Scene& s, const Prepared& p, int i, int j, RayCounts& counts);
+std::uint32_t to_rgba8(Color c);  // 0xRRGGBBAA, alpha 255
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::uint32_t> rgba;  // width × height, row 0 at the BOTTOM (as pixels (i, j))
+    RayCounts rays;
+    bool operator==(const Image&) const = default;
+};
+// The whole image, rows shared between `threads` threads (0: one per core). The image does not
+// depend on the number of threads.
+Image render(const Scene& s, int threads = 0);
+
+}  // namespace cg::rt

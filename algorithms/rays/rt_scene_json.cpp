@@ -1,0 +1,340 @@
+#include "rays/rt_scene_json.hpp"
+
+#include <algorithm>
+
+#include "rays/rays_json.hpp"
+
+namespace cg::rt {
+
+namespace {
+
+using rays_json::color;
+
+Color optional_color(const Reader& r, const char* key, Color fallback) {
+    bool rgb = false;
+    return r.has(key) ? color(r, key, rgb) : fallback;
+}
+
+const json& list(const Reader& r, const char* key, const char* what) {
+    const json& v = r.get(key);
+    if (!v.is_array())
+        throw InputError(r.field(key),
+                         std::string("must be a list of ") + what + ", got " + describe(v));
+    return v;
+}
+
+std::string at(const std::string& base, std::size_t i) {
+    return base + "[" + std::to_string(i) + "]";
+}
+
+bool optional_bool(const Reader& r, const char* key, bool fallback) {
+    return r.has(key) ? r.boolean(key) : fallback;
+}
+
+Camera camera_from(const Reader& r) {
+    r.only({"eye", "center", "up", "fov_y_deg", "size"});
+    Camera c;
+    c.eye = r.point3("eye");
+    c.center = r.point3("center");
+    if (r.has("up")) c.up = r.point3("up");
+    if (r.has("fov_y_deg")) c.fov_y_deg = r.number("fov_y_deg");
+    if (r.has("size")) {
+        const json& v = r.get("size");
+        const std::string f = r.field("size");
+        if (!v.is_array() || v.size() != 2)
+            throw InputError(f, "must be [width, height] in whole pixels, got " + describe(v));
+        for (int k = 0; k < 2; ++k)
+            if (!v[k].is_number_integer())
+                throw InputError(f + "[" + std::to_string(k) + "]",
+                                 "must be an integer number of pixels, got " + describe(v[k]));
+        const long long w = v[0].get<long long>(), h = v[1].get<long long>();
+        if (w < 1 || h < 1 || w > 1 << 20 || h > 1 << 20)
+            throw InputError(f, "must be at least 1×1 and at most 1048576 on a side (got " +
+                                    std::to_string(w) + "×" + std::to_string(h) + ")");
+        c.width = static_cast<int>(w), c.height = static_cast<int>(h);
+    }
+    return c;
+}
+
+Settings settings_from(const Reader& r) {
+    r.only({"max_depth", "shadows", "reflections", "refractions", "model", "ray_casting"});
+    Settings s;
+    if (r.has("max_depth")) {
+        const long long d = r.integer("max_depth");
+        if (d < 0 || d > kMaxDepth)
+            throw InputError(r.field("max_depth"), "must be between 0 and " +
+                                                       std::to_string(kMaxDepth) + " (got " +
+                                                       std::to_string(d) + ")");
+        s.max_depth = static_cast<int>(d);
+    }
+    s.shadows = optional_bool(r, "shadows", true);
+    s.reflections = optional_bool(r, "reflections", true);
+    s.refractions = optional_bool(r, "refractions", true);
+    if (r.has("model")) {
+        const std::string m = r.string("model");
+        if (m == "phong")
+            s.model = Model::Phong;
+        else if (m == "blinn-phong")
+            s.model = Model::BlinnPhong;
+        else
+            throw InputError(r.field("model"),
+                             "must be \"phong\" or \"blinn-phong\" (got \"" + m + "\")");
+    }
+    if (optional_bool(r, "ray_casting", false)) {
+        if ((r.has("max_depth") && s.max_depth > 0) || (r.has("shadows") && s.shadows))
+            throw InputError(r.field("ray_casting"),
+                             "ray casting casts no secondary rays: it cannot have max_depth > 0 "
+                             "or shadows");
+        s.max_depth = 0;
+        s.shadows = false;
+    }
+    return s;
+}
+
+Material material_from(const Reader& r) {
+    r.only({"name", "ka", "kd", "ks", "shininess", "kr", "kt", "ior"});
+    Material m;
+    m.name = r.string("name");
+    m.ka = optional_color(r, "ka", m.ka);
+    m.kd = optional_color(r, "kd", m.kd);
+    m.ks = optional_color(r, "ks", m.ks);
+    if (r.has("shininess")) m.shininess = r.number("shininess");
+    m.kr = optional_color(r, "kr", m.kr);
+    m.kt = optional_color(r, "kt", m.kt);
+    if (r.has("ior")) m.ior = r.number("ior");
+    return m;
+}
+
+Light light_from(const Reader& l) {
+    l.only({"position", "direction", "intensity", "attenuation"});
+    if (l.has("position") == l.has("direction"))
+        throw InputError(l.path(),
+                         "needs exactly one of \"position\" (a point light) and "
+                         "\"direction\" (a directional light)");
+    Light light;
+    light.directional = l.has("direction");
+    if (light.directional)
+        light.direction = l.point3("direction");
+    else
+        light.position = l.point3("position");
+    light.intensity = optional_color(l, "intensity", light.intensity);
+    if (l.has("attenuation")) {
+        if (light.directional)
+            throw InputError(l.field("attenuation"),
+                             "applies to point lights only: a directional light is not attenuated");
+        light.attenuation = l.point3("attenuation");
+    }
+    return light;
+}
+
+int material_index(const Reader& r, const std::vector<Material>& materials) {
+    const std::string name = r.string("material");
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        if (materials[i].name == name) return static_cast<int>(i);
+    std::string names;
+    for (const Material& m : materials) names += (names.empty() ? "" : ", ") + m.name;
+    throw InputError(r.field("material"),
+                     "no material \"" + name + "\" (materials: " + names + ")");
+}
+
+void objects_from(const Reader& r, const std::vector<Material>& materials, Scene& s) {
+    const json& v = list(r, "objects", "objects");
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Reader o(v[i], at("objects", i));
+        Object obj;
+        obj.field = o.path();
+        const std::string type = o.string("type");
+        obj.name = o.has("name") ? o.string("name") : o.path();
+        if (!o.has("material"))
+            throw InputError(o.field("material"),
+                             "is missing: every object needs a material's name");
+        obj.material = material_index(o, materials);
+        if (type == "plane") {
+            o.only({"type", "name", "material", "point", "normal"});
+            obj.kind = ObjectKind::Plane;
+            obj.p0 = o.point3("point");
+            obj.normal = o.point3("normal");
+            s.objects.push_back(obj);
+        } else if (type == "triangle") {
+            o.only({"type", "name", "material", "vertices"});
+            obj.kind = ObjectKind::Triangle;
+            const std::vector<glm::dvec3> p = o.points3("vertices");
+            if (p.size() != 3)
+                throw InputError(o.field("vertices"),
+                                 "must be 3 points, got " + std::to_string(p.size()));
+            obj.p0 = p[0], obj.p1 = p[1], obj.p2 = p[2];
+            obj.field = o.field("vertices");
+            s.objects.push_back(obj);
+        } else if (type == "mesh") {
+            o.only({"type", "name", "material", "vertices", "triangles"});
+            const std::vector<glm::dvec3> p = o.points3("vertices");
+            const json& tris = list(o, "triangles", "triangles [i, j, k]");
+            if (tris.empty())
+                throw InputError(o.field("triangles"), "must list at least one triangle");
+            if (s.objects.size() + tris.size() > kMaxObjects)
+                throw InputError(o.field("triangles"),
+                                 "makes the scene " +
+                                     std::to_string(s.objects.size() + tris.size()) +
+                                     " objects; the limit is " + std::to_string(kMaxObjects));
+            for (std::size_t t = 0; t < tris.size(); ++t) {
+                const std::string tf = at(o.field("triangles"), t);
+                const json& ix = tris[t];
+                if (!ix.is_array() || ix.size() != 3)
+                    throw InputError(tf,
+                                     "must be three vertex indices [i, j, k], got " + describe(ix));
+                Object tri = obj;
+                tri.kind = ObjectKind::Triangle;
+                tri.field = tf;
+                tri.name = obj.name + ".triangles[" + std::to_string(t) + "]";
+                glm::dvec3* corner[3] = {&tri.p0, &tri.p1, &tri.p2};
+                for (int k = 0; k < 3; ++k) {
+                    if (!ix[k].is_number_integer() || ix[k].get<long long>() < 0 ||
+                        ix[k].get<long long>() >= static_cast<long long>(p.size()))
+                        throw InputError(at(tf, k), "must be a vertex index from 0 to " +
+                                                        std::to_string(p.size() - 1) + ", got " +
+                                                        describe(ix[k]));
+                    *corner[k] = p[ix[k].get<std::size_t>()];
+                }
+                s.objects.push_back(tri);
+            }
+        } else {
+            o.only({"type", "name", "material", "params", "transform", "zmin", "zmax"});
+            const bool quadric = type == "sphere" || type == "ellipsoid" || type == "paraboloid" ||
+                                 type == "hyperboloid" || type == "cone" || type == "cylinder";
+            if (!quadric)
+                throw InputError(o.field("type"),
+                                 std::string("must be one of ") + rays_json::kQuadricTypes +
+                                     ", plane, triangle, mesh (got \"" + type + "\")");
+            obj.kind = ObjectKind::Quadric;
+            obj.quadric = rays_json::quadric(o);
+            s.objects.push_back(obj);
+        }
+        if (s.objects.size() > kMaxObjects)
+            throw InputError("objects", "has more than " + std::to_string(kMaxObjects) +
+                                            " objects (triangles counted one by one)");
+    }
+}
+
+}  // namespace
+
+Scene scene_from_json(const json& j, std::initializer_list<const char*> allow) {
+    const Reader r(j);
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        static const char* known[] = {"camera",    "settings", "background", "ambient",
+                                      "materials", "lights",   "objects"};
+        const bool ok =
+            std::any_of(std::begin(known), std::end(known),
+                        [&](const char* k) { return it.key() == k; }) ||
+            std::any_of(allow.begin(), allow.end(), [&](const char* k) { return it.key() == k; });
+        if (!ok)
+            throw InputError(it.key(),
+                             "is not a field of a scene (fields: camera, settings, "
+                             "background, ambient, materials, lights, objects)");
+    }
+    Scene s;
+    s.camera = camera_from(r.object("camera"));
+    if (r.has("settings")) s.settings = settings_from(r.object("settings"));
+    s.background = optional_color(r, "background", s.background);
+    s.ambient = optional_color(r, "ambient", s.ambient);
+    const json& mats = list(r, "materials", "materials");
+    if (mats.empty()) throw InputError("materials", "must list at least one material");
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+        s.materials.push_back(material_from(Reader(mats[i], at("materials", i))));
+        for (std::size_t k = 0; k < i; ++k)
+            if (s.materials[k].name == s.materials[i].name)
+                throw InputError(at("materials", i) + ".name",
+                                 "\"" + s.materials[i].name + "\" names two materials");
+    }
+    if (r.has("lights")) {
+        const json& lights = list(r, "lights", "lights");
+        if (lights.size() > kMaxLights)
+            throw InputError("lights", "has " + std::to_string(lights.size()) +
+                                           " lights; the limit is " + std::to_string(kMaxLights));
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            s.lights.push_back(light_from(Reader(lights[i], at("lights", i))));
+    }
+    objects_from(r, s.materials, s);
+    validate(s);
+    return s;
+}
+
+std::string image_checksum(const std::vector<std::uint32_t>& rgba, int width, int height) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (int j = height - 1; j >= 0; --j)
+        for (int i = 0; i < width; ++i) {
+            const std::uint32_t v = rgba[static_cast<std::size_t>(j) * width + i];
+            for (int shift = 24; shift >= 0; shift -= 8) {
+                h ^= (v >> shift) & 0xff;
+                h *= 0x100000001b3ull;
+            }
+        }
+    static const char* digits = "0123456789abcdef";
+    std::string s(16, '0');
+    for (int k = 15; k >= 0; --k, h >>= 4) s[k] = digits[h & 15];
+    return s;
+}
+
+json scene_to_json(const Scene& s) {
+    auto colour = [](const Color& c) {
+        return c.x == c.y && c.y == c.z ? nice_number(c.x) : nice_point(c);
+    };
+    json camera{{"eye", nice_point(s.camera.eye)},
+                {"center", nice_point(s.camera.center)},
+                {"up", nice_point(s.camera.up)},
+                {"fov_y_deg", nice_number(s.camera.fov_y_deg)},
+                {"size", {s.camera.width, s.camera.height}}};
+    json settings{{"max_depth", s.settings.max_depth},
+                  {"shadows", s.settings.shadows},
+                  {"reflections", s.settings.reflections},
+                  {"refractions", s.settings.refractions},
+                  {"model", s.settings.model == Model::Phong ? "phong" : "blinn-phong"}};
+    json materials = json::array();
+    for (const Material& m : s.materials)
+        materials.push_back(json{{"name", m.name},
+                                 {"ka", colour(m.ka)},
+                                 {"kd", colour(m.kd)},
+                                 {"ks", colour(m.ks)},
+                                 {"shininess", nice_number(m.shininess)},
+                                 {"kr", colour(m.kr)},
+                                 {"kt", colour(m.kt)},
+                                 {"ior", nice_number(m.ior)}});
+    json lights = json::array();
+    for (const Light& l : s.lights) {
+        json j = json::object();
+        if (l.directional)
+            j["direction"] = nice_point(l.direction);
+        else
+            j["position"] = nice_point(l.position);
+        j["intensity"] = colour(l.intensity);
+        if (!l.directional && l.attenuation != glm::dvec3(1, 0, 0))
+            j["attenuation"] = nice_point(l.attenuation);
+        lights.push_back(std::move(j));
+    }
+    json objects = json::array();
+    for (const Object& o : s.objects) {
+        json j;
+        switch (o.kind) {
+            case ObjectKind::Quadric:
+                j = rays_json::quadric_json(o.quadric);
+                break;
+            case ObjectKind::Plane:
+                j = json{{"type", "plane"},
+                         {"point", nice_point(o.p0)},
+                         {"normal", nice_point(o.normal)}};
+                break;
+            case ObjectKind::Triangle:
+                j = json{{"type", "triangle"},
+                         {"vertices", {nice_point(o.p0), nice_point(o.p1), nice_point(o.p2)}}};
+                break;
+        }
+        j["name"] = o.name;
+        j["material"] = s.materials[o.material].name;
+        objects.push_back(std::move(j));
+    }
+    return json{{"camera", std::move(camera)},        {"settings", std::move(settings)},
+                {"background", colour(s.background)}, {"ambient", colour(s.ambient)},
+                {"materials", std::move(materials)},  {"lights", std::move(lights)},
+                {"objects", std::move(objects)}};
+}
+
+}  // namespace cg::rt

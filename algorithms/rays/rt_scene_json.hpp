@@ -1,0 +1,40 @@
+// The ray tracer's scene file (JSON). A colour is a number (grey) or [r, g, b].
+//
+//   {"camera":    {"eye": [x, y, z], "center": [x, y, z], "up": [x, y, z] (default [0, 1, 0]),
+//                  "fov_y_deg": θ (default 45), "size": [width, height] (default [64, 48])},
+//    "settings":  {"max_depth": n (default 3), "shadows", "reflections", "refractions": bool
+//                  (default true), "model": "phong" | "blinn-phong" (default "phong"),
+//                  "ray_casting": bool (true: no secondary rays at all, no shadows)} (optional),
+//    "background": colour (default 0), "ambient": colour I_a (default 0.1),
+//    "materials": [{"name": "red", "ka", "kd", "ks": colours, "shininess": p,
+//                   "kr": colour (mirror share, default 0), "kt": colour (refracted share,
+//                   default 0), "ior": index (default 1)}, …]  (defaults 0.1, 0.7, 0.3, 20),
+//    "lights":    [{"position": [x, y, z] | "direction": [x, y, z] (the way the light travels),
+//                   "intensity": colour, "attenuation": [c1, c2, c3] (point lights)}, …],
+//    "objects":   [{"type": a quadric type (see rays_json.hpp) with its "params", "transform",
+//                   "zmin", "zmax"} | {"type": "plane", "point": [x, y, z], "normal": [x, y, z]} |
+//                  {"type": "triangle", "vertices": [[x, y, z] × 3]} |
+//                  {"type": "mesh", "vertices": [[x, y, z], …], "triangles": [[i, j, k], …]},
+//                  each with "material": a material's name and an optional "name"],
+//    "stepping":  {…} (the ray-tracer algorithm's; ignored by render-scene)}
+//
+// A mesh becomes one triangle object per entry of "triangles" (vertex indices, counter-
+// clockwise seen from the front). Errors name the field: "objects[2].material: no material
+// \"glas\" (materials: glass, red)".
+#pragma once
+
+#include "io/json.hpp"
+#include "rays/rt_scene.hpp"
+
+namespace cg::rt {
+
+// Reads a scene object (the fields above; `allow` lists other top-level fields the caller
+// reads itself, such as "stepping"), then validates it.
+Scene scene_from_json(const json& j, std::initializer_list<const char*> allow = {});
+json scene_to_json(const Scene& s);
+
+// FNV-1a (64-bit, hex) over the RGBA bytes of an image (row 0 at the bottom, as rt::Image),
+// taken top row first: a fingerprint of exactly what its PNG holds.
+std::string image_checksum(const std::vector<std::uint32_t>& rgba, int width, int height);
+
+}  // namespace cg::rt
