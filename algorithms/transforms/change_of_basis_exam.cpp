@@ -94,11 +94,11 @@ std::string ChangeOfBasis::question(const Input& in) {
     q += in.points.size() > 1 ? "The points " : "The point ";
     for (std::size_t k = 0; k < in.points.size(); ++k)
         q += (k ? ", " : "") + std::string("P") + std::to_string(k) + " = " + num(in.points[k]);
-    q += " are given by their coordinates relative to F1. Give the coordinates of each point "
+    q += in.points.size() > 1 ? " are given by their coordinates" : " is given by its coordinates";
+    q += " relative to F1. Give the coordinates of each point "
          "relative to F2 (points), the change-of-basis matrix M₁,₂ that maps coordinates "
          "relative to F1 to coordinates relative to F2 (matrix, 4×4 rows, column vectors with "
          "w = 1 for points), and whether F2 is orthonormal (orthonormal_to).";
-    if (in.points.size() == 1) q.replace(q.find(" are given"), 10, " is given");
     return q;
 }
 
