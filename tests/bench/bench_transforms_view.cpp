@@ -1,11 +1,15 @@
-// Virtual sphere, arcball and the projection pipeline: each state machine run to completion vs
-// its straight-line function (10^5 random drags of 8 samples; 10^5 random cameras with 4 points
-// and a segment), and the cost of one narrated step plus its picture.
+// Virtual sphere, arcball, the projection pipeline, normals and change of basis: each state
+// machine run to completion vs its straight-line function (10^5 random drags of 8 samples; 10^5
+// random cameras with 4 points and a segment; 10^5 normal maps; 10^5 frame pairs with 2 points
+// and a vector), and the cost of one narrated step plus its picture.
 #include <benchmark/benchmark.h>
+
+#include <cmath>
 
 #include "bench/bench_support.hpp"
 
 #include "core/rng.hpp"
+#include "transforms/change_of_basis.hpp"
 #include "transforms/normal_transform.hpp"
 #include "transforms/perspective.hpp"
 #include "transforms/trackball_drag.hpp"
@@ -161,6 +165,67 @@ BENCHMARK(BM_NormalTransform_StateMachine)->Unit(benchmark::kMillisecond);
 
 void BM_NormalTransform_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "normal-transform"); }
 BENCHMARK(BM_NormalTransform_StepAndPicture)->Unit(benchmark::kMicrosecond);
+
+// Half of F2 orthonormal (the transpose shortcut), half general (cross products over det).
+const std::vector<cg::ChangeOfBasis::Input>& frame_pairs() {
+    static const std::vector<cg::ChangeOfBasis::Input> inputs = [] {
+        cg::Rng rng(42);
+        const auto random = [&](double r) {
+            return glm::dvec3(rng.uniform(-r, r), rng.uniform(-r, r), rng.uniform(-r, r));
+        };
+        std::vector<cg::ChangeOfBasis::Input> v(100'000);
+        for (std::size_t k = 0; k < v.size(); ++k) {
+            auto& in = v[k];
+            for (int i = 0; i < 3; ++i)
+                in.from.axes[i] = random(1) + 3.0 * glm::dvec3(i == 0, i == 1, i == 2);
+            in.from.origin = random(10);
+            if (k % 2 == 0) {
+                const double c = std::cos(0.001 * k), s = std::sin(0.001 * k);
+                in.to.axes = {glm::dvec3(c, s, 0), glm::dvec3(-s, c, 0), glm::dvec3(0, 0, 1)};
+            } else {
+                for (int i = 0; i < 3; ++i)
+                    in.to.axes[i] = random(1) + 3.0 * glm::dvec3(i == 0, i == 1, i == 2);
+            }
+            in.to.origin = random(10);
+            in.points = {random(5), random(5)};
+            in.vectors = {random(5)};
+        }
+        return v;
+    }();
+    return inputs;
+}
+
+// Both without validation; the plain side computes every field of the result straight through.
+void BM_ChangeOfBasis_Plain(benchmark::State& state) {
+    const auto& inputs = frame_pairs();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) sum += cg::ChangeOfBasis::transform(in).points.back().x;
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_ChangeOfBasis_Plain)->Unit(benchmark::kMillisecond);
+
+void BM_ChangeOfBasis_StateMachine(benchmark::State& state) {
+    const auto& inputs = frame_pairs();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) {
+            cg::ChangeOfBasis::State s;
+            s.in = in;
+            sum += cg::run_to_end<cg::ChangeOfBasis>(std::move(s)).points.back().x;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_ChangeOfBasis_StateMachine)->Unit(benchmark::kMillisecond);
+
+void BM_ChangeOfBasis_StepAndPicture(benchmark::State& state) {
+    cg::bench::step_and_picture(state, "change-of-basis");
+}
+BENCHMARK(BM_ChangeOfBasis_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
 void BM_VirtualSphere_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "virtual-sphere"); }
 void BM_Arcball_StepAndPicture(benchmark::State& state) { cg::bench::step_and_picture(state, "arcball"); }
