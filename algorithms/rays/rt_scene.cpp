@@ -48,6 +48,24 @@ void check_nonzero(dvec3 v, const std::string& field, const char* what) {
 
 }  // namespace
 
+double tree_rays(const Scene& s) {
+    bool mirrors = false, glass = false, both = false;
+    for (const Material& m : s.materials) {
+        const bool r = s.settings.reflections && (m.kr.x > 0 || m.kr.y > 0 || m.kr.z > 0);
+        const bool t = s.settings.refractions && (m.kt.x > 0 || m.kt.y > 0 || m.kt.z > 0);
+        mirrors = mirrors || r, glass = glass || t, both = both || (r && t);
+    }
+    const int d = s.settings.max_depth;
+    if (both || (mirrors && glass)) return std::ldexp(1.0, d + 1) - 1;
+    if (mirrors || glass) return d + 1.0;
+    return 1;
+}
+
+double pixel_work(const Scene& s) {
+    return tree_rays(s) * (1.0 + static_cast<double>(s.lights.size())) *
+           std::max<double>(1, static_cast<double>(s.objects.size()));
+}
+
 void validate(const Scene& s) {
     const Camera& c = s.camera;
     check_coordinates(c.eye, "camera.eye");
@@ -123,6 +141,22 @@ void validate(const Scene& s) {
         throw InputError("objects", "has " + std::to_string(s.objects.size()) +
                                         " objects (triangles counted one by one); the limit is " +
                                         std::to_string(kMaxObjects));
+    // What a run would cost, now that the counts are known to be sane.
+    const double per_pixel = pixel_work(s);
+    if (per_pixel > kMaxPixelWork)
+        throw InputError(
+            tree_rays(s) > 64 ? "settings.max_depth" : "objects",
+            "makes one pixel cost up to " + num(per_pixel, 3) + " ray-object tests (" +
+                num(tree_rays(s)) + " rays per tree × " + std::to_string(s.lights.size() + 1) +
+                " for the lights × " + std::to_string(s.objects.size()) +
+                " objects); the limit is 1e7: lower max_depth, or use fewer objects or lights");
+    const double total = per_pixel * c.width * c.height;
+    if (total > kMaxWork)
+        throw InputError("camera.size", "makes the image cost up to " + num(total, 3) +
+                                            " ray-object tests (" + std::to_string(c.width) + "×" +
+                                            std::to_string(c.height) + " pixels × " +
+                                            num(per_pixel, 3) +
+                                            " per pixel); the limit is 2e10: use fewer pixels");
     for (const Object& o : s.objects) {
         if (o.material < 0 || o.material >= static_cast<int>(s.materials.size()))
             throw InputError(o.field + ".material", "names no material");

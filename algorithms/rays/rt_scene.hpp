@@ -112,6 +112,15 @@ constexpr std::size_t kMaxLights = 64;
 constexpr double kMaxCoordinate = 1e12;  // |coordinates| and scene sizes stay below this
 constexpr double kMaxAttenuation = 1e6;  // 1/(c1 + c2 r + c3 r²) is capped here (a light at r = 0)
 
+// The cost of a scene in ray-object tests, worst case: every ray of a primary ray's tree (a
+// full binary tree of depth max_depth when some materials mirror and others refract — or one
+// does both —, a chain when only one kind does) meets every object and casts a shadow ray to
+// every light. The tracer has no acceleration structure, so these bound its running time.
+double tree_rays(const Scene& s);      // rays in one primary ray's tree, at most
+double pixel_work(const Scene& s);     // tree_rays × (1 + lights) × objects
+constexpr double kMaxPixelWork = 1e7;  // one pixel (one step): well under a second
+constexpr double kMaxWork = 2e10;      // the whole image: a few minutes at most
+
 // Throws InputError naming the field ("camera.fov_y_deg", "objects[2].material",
 // "lights[0].attenuation"). Fields are named as in the JSON scene format (rt_scene_json.hpp).
 void validate(const Scene& s);

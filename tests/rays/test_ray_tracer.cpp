@@ -701,6 +701,30 @@ TEST_CASE("ray-tracer: scenes too big to run are refused with their limit",
     many += "]}]}";
     CHECK(error_of(many) ==
           "objects[0].triangles: makes the scene 20001 objects; the limit is 20000");
+
+    // Costs: a full binary ray tree 16 deep (mirror and glass) with 200 objects and 3 lights
+    // could cast 2^17 − 1 rays per pixel, each tested against everything.
+    rt::Scene deep = scene(kBall);
+    deep.settings.max_depth = 16;
+    deep.materials[0].kr = dvec3(0.5);
+    deep.materials[0].kt = dvec3(0.5);
+    deep.lights.resize(3, deep.lights[0]);
+    deep.objects.resize(200, deep.objects[0]);
+    CHECK_THROWS_WITH(rt::validate(deep),
+                      Catch::StartsWith("settings.max_depth: makes one pixel cost up to 1.05e+08 "
+                                        "ray-object tests (131071 rays per tree × 4 for the lights × "
+                                        "200 objects); the limit is 1e7"));
+    deep.settings.max_depth = 3;  // 15 rays per tree: fine per pixel, but 4096² pixels are not
+    rt::validate(deep);
+    deep.camera.width = deep.camera.height = 4096;
+    CHECK_THROWS_WITH(rt::validate(deep),
+                      Catch::StartsWith("camera.size: makes the image cost up to 2.01e+11 ray-object "
+                                        "tests (4096×4096 pixels × 1.2e+04 per pixel); the limit is 2e10"));
+    // Only mirrors: a chain, max_depth + 1 rays.
+    deep.materials[0].kt = dvec3(0.0);
+    CHECK(rt::tree_rays(deep) == 4);
+    deep.settings.reflections = false;
+    CHECK(rt::tree_rays(deep) == 1);
 }
 
 // ---- exams, determinism, the picture ---------------------------------------------------------

@@ -1,0 +1,31 @@
+// Scene files, through `cgsandbox render-scene`'s path: parse, read the scene (validation),
+// then render it with the plain tracer on one thread and check every pixel was written and
+// the ray counts add up. Only InputError may escape; scenes too costly for a fuzz iteration
+// (fuzz_support.hpp) are validated but not rendered.
+#include "fuzz_support.hpp"
+#include "rays/rt_scene.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    cg::rt::Scene scene;
+    cg::json input;
+    try {
+        input = cg::parse_json(text);
+        scene = cg::rt::scene_from_json(input, {"stepping"});
+        (void)cg::rt::scene_to_json(scene).dump();
+    } catch (const cg::InputError&) {
+        return 0;
+    }
+    if (cg::fuzz::too_costly(*cg::fuzz::registry().find("ray-tracer"), input)) return 0;
+    const cg::rt::Image img = cg::rt::render(scene, 1);
+    if (img.rgba.size() != static_cast<std::size_t>(scene.camera.width) * scene.camera.height)
+        cg::fuzz::fail("the image has the wrong size");
+    for (std::uint32_t v : img.rgba)
+        if ((v & 0xff) != 0xff) cg::fuzz::fail("a pixel was not written");
+    if (img.rays.primary != img.rgba.size()) cg::fuzz::fail("one primary ray per pixel");
+    // The scene written back reads the same.
+    const cg::json written = cg::rt::scene_to_json(scene);
+    if (cg::rt::scene_to_json(cg::rt::scene_from_json(written)) != written)
+        cg::fuzz::fail("a scene does not survive writing and reading back");
+    return 0;
+}
