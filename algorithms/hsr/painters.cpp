@@ -110,7 +110,8 @@ void set_extents(const Ctx& c, Piece& p) {
 Piece whole(const Ctx& c, int k) {
     Piece p;
     p.parent = k;
-    p.name = "P" + std::to_string(k);
+    p.name = "P";  // not "P" + to_string(k): GCC 12 warns falsely on that insert (bug 105329)
+    p.name += std::to_string(k);
     p.vertices = c.scene.polygons[static_cast<std::size_t>(k)].vertices;
     set_extents(c, p);
     count_centres(c, p);
