@@ -1,11 +1,11 @@
 # CG Sandbox — the two commands:
 #   make run    install what is missing, build, and open the viewer
-#   make test   install what is missing, build, and run every test (GUI tests under xvfb-run)
-# make test-sanitize runs the whole suite again under AddressSanitizer + UBSan with a short run
-# of each fuzz target (the `sanitize` preset, build-sanitize/); it joins `make test` once it
-# has passed on the full set of algorithms (see the README's reliability section).
-# and a few more: make build, make bench, make fuzz, make clean.
-.PHONY: all deps configure build build-sanitize run test test-sanitize bench fuzz clean
+#   make test   install what is missing, build, and run every test (GUI tests under xvfb-run),
+#               then build the sanitizer configuration and run the whole suite again under
+#               AddressSanitizer + UBSan, with a 30-second run of each fuzz target
+# and a few more: make build, make test-normal, make test-sanitize, make bench, make fuzz,
+# make clean.
+.PHONY: all deps configure build build-sanitize run test test-normal test-sanitize bench fuzz clean
 
 FUZZ_SECONDS ?= 300
 
@@ -27,7 +27,9 @@ build-sanitize: deps
 run: build
 	@build/bin/cgsandbox
 
-test: build
+test: test-normal test-sanitize
+
+test-normal: build
 	@ctest --preset default
 
 test-sanitize: build-sanitize
