@@ -22,6 +22,12 @@ const dvec3 kOffsets[] = {{0, 0, 1},          {0.6, 0, 0.8},    {0, 0.6, 0.8}, {
 const dvec3 kToLight[] = {{0, 0.6, 0.8},  {0.6, 0, 0.8}, {0, 0.8, 0.6}, {0.8, 0, 0.6},
                           {-0.6, 0, 0.8}, {0, 0, 1},     {0.6, 0.8, 0}, {0, 1, 0}};
 
+// Short decimals stay short: 0.8 − 1 is −0.19999999999999996 in binary, written −0.2.
+dvec3 tidy(dvec3 v) {
+    for (int k = 0; k < 3; ++k) v[k] = std::round(v[k] * 1e6) / 1e6;
+    return v;
+}
+
 double pick(Rng& rng, std::initializer_list<double> xs) {
     const auto k = rng.integer(0, static_cast<long long>(xs.size()) - 1);
     return *(xs.begin() + k);
@@ -36,7 +42,7 @@ RayTracer::Input RayTracer::exam_input(Rng& rng) {
         const double r = pick(rng, {1, 2, 0.5});
         const dvec3 C(rng.integer(-2, 2), rng.integer(-1, 1), rng.integer(-3, 0));
         const dvec3 off = kOffsets[rng.integer(0, 9)];
-        const dvec3 P = C + r * off;  // the hit
+        const dvec3 P = tidy(C + r * off);  // the hit
         const double h = pick(rng, {4, 5, 6});
         const dvec3 E(P.x, P.y, P.z + h);  // straight down −z onto P
         in.explicit_ray = true;
@@ -63,7 +69,7 @@ RayTracer::Input RayTracer::exam_input(Rng& rng) {
         const dvec3 l = kToLight[rng.integer(0, 7)];
         const double dist = pick(rng, {5, 10});
         rt::Light light;
-        light.position = P + dist * l;
+        light.position = tidy(P + dist * l);
         light.intensity = dvec3(pick(rng, {0.8, 1}));
         sc.lights.push_back(light);
 
@@ -80,7 +86,7 @@ RayTracer::Input RayTracer::exam_input(Rng& rng) {
             blocker.name = "blocker";
             blocker.field = "objects[1]";
             blocker.quadric.r = 0.5;
-            blocker.quadric.world_from_model[3] = glm::dvec4(P + (dist / 2) * l, 1);
+            blocker.quadric.world_from_model[3] = glm::dvec4(tidy(P + (dist / 2) * l), 1);
             sc.objects.push_back(blocker);
         }
         // Keep problems a student can finish by hand: the eye ray hits the ball where we aimed
