@@ -405,21 +405,21 @@ void RayTracer::step(State& s, StepInfo* info) {
 
 // ---- [narration] ----------------------------------------------------------------------------
 
-namespace {
-
-const char* kind_name(RayKind k) {
+const char* RayTracer::kind_id(RayKind k) {
     switch (k) {
         case RayKind::Primary:
             return "primary";
         case RayKind::Shadow:
             return "shadow";
         case RayKind::Reflected:
-            return "mirror";
+            return "reflected";
         case RayKind::Refracted:
             return "refracted";
     }
     return "";
 }
+
+namespace {
 
 std::string object_name(const rt::Scene& sc, int k) {
     return k < 0 ? std::string("nothing") : sc.objects[k].name;
@@ -479,7 +479,7 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
     }
     const RayNode& n = s.tree[s.active];
     const std::string name = ray_label(s.tree, s.active);
-    add("ray", name + " (" + kind_name(n.kind) + ")");
+    add("ray", name + " (" + kind_id(n.kind) + ")");
     add("depth", static_cast<long long>(n.depth));
     add("origin", vec(n.origin));
     add("direction", vec(n.direction));

@@ -43,6 +43,7 @@ struct RayTracer {
     };
 
     enum class RayKind : std::uint8_t { Primary, Shadow, Reflected, Refracted };
+    static const char* kind_id(RayKind k);  // "primary", "shadow", "reflected", "refracted"
 
     // One ray of the ray tree: what the picture, the narration and the result show.
     struct RayNode {

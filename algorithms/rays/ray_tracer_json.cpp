@@ -37,20 +37,6 @@ const char* granularity_id(Granularity g) {
     return "";
 }
 
-const char* kind_id(RayKind k) {
-    switch (k) {
-        case RayKind::Primary:
-            return "primary";
-        case RayKind::Shadow:
-            return "shadow";
-        case RayKind::Reflected:
-            return "reflected";
-        case RayKind::Refracted:
-            return "refracted";
-    }
-    return "";
-}
-
 json rays_json_of(const rt::RayCounts& c) {
     return json{{"primary", c.primary},
                 {"shadow", c.shadow},
@@ -153,7 +139,7 @@ struct JsonIo<RayTracer> {
                 if (n.kind == RayKind::Refracted) refracted = to_json(n.direction);
             }
             json node{{"ray", k},
-                      {"kind", kind_id(n.kind)},
+                      {"kind", RayTracer::kind_id(n.kind)},
                       {"parent", n.parent < 0 ? json(nullptr) : json(n.parent)},
                       {"depth", n.depth},
                       {"origin", to_json(n.origin)},

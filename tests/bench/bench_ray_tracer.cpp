@@ -62,25 +62,9 @@ void BM_RayTracer_TreeStepAndPicture(benchmark::State& state) {
 BENCHMARK(BM_RayTracer_TreeStepAndPicture)->Unit(benchmark::kMicrosecond);
 
 void BM_RayTracer_PixelStepAndPicture(benchmark::State& state) {
-    const cg::Registry registry = cg::builtin_registry();
-    const cg::Algorithm& a = *registry.find("ray-tracer");
-    cg::json input = a.example();
-    input["stepping"] = {{"granularity", "pixels"}};
-    const auto start = a.create(input);
-    auto run = start->clone();
-    cg::Scene scene;
-    for (auto _ : state) {
-        if (run->done()) {
-            state.PauseTiming();
-            run = start->clone();
-            state.ResumeTiming();
-        }
-        cg::StepInfo info;
-        run->step(&info);
-        scene.clear();
-        run->draw(scene);
-        benchmark::DoNotOptimize(scene.faces3.data());
-    }
+    cg::bench::step_and_picture(state, "ray-tracer", [](cg::json& input) {
+        input["stepping"] = {{"granularity", "pixels"}};
+    });
 }
 BENCHMARK(BM_RayTracer_PixelStepAndPicture)->Unit(benchmark::kMicrosecond);
 

@@ -9,10 +9,14 @@ namespace cg::bench {
 
 // One narrated step through the registry plus the scene it draws, on the algorithm's
 // example; the run restarts (untimed) whenever it finishes.
-inline void step_and_picture(benchmark::State& state, const char* id) {
+// `edit` may change the example first (another granularity, a bigger input).
+inline void step_and_picture(benchmark::State& state, const char* id,
+                             void (*edit)(json&) = nullptr) {
     const Registry registry = builtin_registry();
     const Algorithm& a = *registry.find(id);
-    const auto start = a.create(a.example());
+    json input = a.example();
+    if (edit) edit(input);
+    const auto start = a.create(input);
     auto run = start->clone();
     Scene scene;
     for (auto _ : state) {

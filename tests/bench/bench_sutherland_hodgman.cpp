@@ -3,6 +3,8 @@
 // step plus its picture.
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -90,23 +92,7 @@ BENCHMARK(BM_SutherlandHodgman_StateMachine)->Unit(benchmark::kMillisecond);
 
 // What the viewer pays per step: a narrated step through the registry plus the scene.
 void BM_SutherlandHodgman_StepAndPicture(benchmark::State& state) {
-    const cg::Registry registry = cg::builtin_registry();
-    const cg::Algorithm& sh = *registry.find("sutherland-hodgman");
-    const auto start = sh.create(sh.example());
-    auto run = start->clone();
-    cg::Scene scene;
-    for (auto _ : state) {
-        if (run->done()) {
-            state.PauseTiming();
-            run = start->clone();
-            state.ResumeTiming();
-        }
-        cg::StepInfo info;
-        run->step(&info);
-        scene.clear();
-        run->draw(scene);
-        benchmark::DoNotOptimize(scene.polygons.data());
-    }
+    cg::bench::step_and_picture(state, "sutherland-hodgman");
 }
 BENCHMARK(BM_SutherlandHodgman_StepAndPicture)->Unit(benchmark::kMicrosecond);
 
