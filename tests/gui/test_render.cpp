@@ -129,7 +129,7 @@ TEST_CASE("gui: render refuses bad input before opening a window", "[gui][errors
 // the top two thirds; the canvas runs from there to the right column (the rightmost 27 %).
 namespace {
 
-constexpr int kW = 1400, kH = 900;
+constexpr int kW = 1400;  // × 900
 constexpr int kLeft = 378, kRight = kW - 378, kTop = 600;
 
 // Near-black: the panels' text (antialiased glyphs have some pixels at full ink).
@@ -234,4 +234,28 @@ TEST_CASE("gui: an algorithm's slider is drawn over the canvas", "[gui][slider]"
     Image none = render_args({"liang-barsky", "--size", "600x400"}, "liang-barsky-no-slider");
     CHECK(none.find_in(cg::viewer::kNoteBackground, 0, none.height - 45, none.width, none.height, 6)
               .size() < 200);
+}
+
+TEST_CASE("gui: the ray tracer's image fills in pixel by pixel, and a ray tree is drawn in 3D",
+          "[gui][3d][ray-tracer]") {
+    // The lesson's 48 × 36 image: the red ball's lit side is about (221, 42, 28). After one
+    // step only the first pixel is known; at the end the ball is in the image panel too (the
+    // 3D canvas shows the ball's mesh in a similar red in both pictures).
+    const std::vector<std::string> lesson = {"--lesson", "ray-tracer", "--preset",
+                                             "the whole image, pixel by pixel", "--size", "900x500"};
+    auto with_step = [&](const char* step) {
+        std::vector<std::string> a = lesson;
+        a.insert(a.end(), {"--step", step});
+        return a;
+    };
+    Image first = render_args(with_step("1"), "ray-tracer-first");
+    Image end = render_args(lesson, "ray-tracer-end");
+    const std::uint32_t red = 0xdd2a1cff;
+    CHECK(end.find(red, 40).size() > first.find(red, 40).size() + 300);
+    // One pixel's ray tree (the first preset): its two shadow rays, one reaching its light
+    // (green) and one blocked (red), and the mirror ray (teal) on the 3D canvas.
+    Image tree = render_args({"--lesson", "ray-tracer", "--size", "900x500"}, "ray-tracer-tree");
+    CHECK(tree.find(cg::viewer::role_rgba(cg::Role::Kept), 40).size() > 15);
+    CHECK(tree.find(cg::viewer::role_rgba(cg::Role::Discarded), 40).size() > 15);
+    CHECK(tree.find(cg::viewer::role_rgba(cg::Role::Entering), 40).size() > 15);
 }
