@@ -309,6 +309,7 @@ int cmd_render_scene(const SceneRenderOptions& o) {
                 j["camera"]["size"] = {width, height};
         }
         scene = rt::scene_from_json(j, {"stepping"});
+        rt::validate(scene);
     } catch (const InputError& e) {
         fail(source, e);
     }

@@ -111,10 +111,6 @@ int event_line(Event e) {
     return 0;
 }
 
-bool any_positive(const Color& c) {
-    return c.x > 0 || c.y > 0 || c.z > 0;
-}
-
 }  // namespace
 
 // ---- [validate and start] -------------------------------------------------------------------
@@ -123,16 +119,8 @@ void RayTracer::validate(const Input& in) {
     rt::validate(in.scene);
     if (in.granularity != Granularity::RayTree) return;
     if (in.explicit_ray) {
-        for (int k = 0; k < 3; ++k) {
-            if (!std::isfinite(in.ray_origin[k]) ||
-                std::fabs(in.ray_origin[k]) > rt::kMaxCoordinate)
-                throw InputError("stepping.ray.origin[" + std::to_string(k) + "]",
-                                 "must be a finite number of magnitude at most 1e12");
-            if (!std::isfinite(in.ray_direction[k]) ||
-                std::fabs(in.ray_direction[k]) > rt::kMaxCoordinate)
-                throw InputError("stepping.ray.direction[" + std::to_string(k) + "]",
-                                 "must be a finite number of magnitude at most 1e12");
-        }
+        rt::check_coordinates(in.ray_origin, "stepping.ray.origin");
+        rt::check_coordinates(in.ray_direction, "stepping.ray.direction");
         const double m = std::max({std::fabs(in.ray_direction.x), std::fabs(in.ray_direction.y),
                                    std::fabs(in.ray_direction.z)});
         if (m == 0)
@@ -162,7 +150,7 @@ RayTracer::State RayTracer::start(const Input& in) {
         s.pixel_i = std::min(static_cast<int>(std::floor(in.pixel.x)), c.width - 1);
         s.pixel_j = std::min(static_cast<int>(std::floor(in.pixel.y)), c.height - 1);
         // A small image is cheap to render whole: the picture shows the pixel inside it.
-        if (!in.explicit_ray && static_cast<long long>(c.width) * c.height <= 96 * 72)
+        if (!in.explicit_ray && static_cast<long long>(c.width) * c.height <= kPreviewPixels)
             s.preview = Shared<std::vector<std::uint32_t>>(rt::render(in.scene, 1).rgba);
     } else {
         s.image.reset(c.width, c.height);
@@ -327,8 +315,8 @@ void RayTracer::advance_tree(State& s) {
             case Next::Secondary:
             case Next::Refract: {
                 const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
-                const bool wants_reflect = sc.settings.reflections && any_positive(m.kr);
-                const bool wants_refract = sc.settings.refractions && any_positive(m.kt);
+                const bool wants_reflect = sc.settings.reflections && rt::any_positive(m.kr);
+                const bool wants_refract = sc.settings.refractions && rt::any_positive(m.kt);
                 if (ray.depth >= sc.settings.max_depth) {
                     f.next = Next::Return;
                     if (wants_reflect || wants_refract) {
@@ -341,36 +329,25 @@ void RayTracer::advance_tree(State& s) {
                 RayNode child;
                 child.parent = f.node;
                 child.depth = ray.depth + 1;
+                rt::SecondaryRay sec;
                 if (f.next == Next::Secondary) {
                     f.next = Next::Refract;
                     if (!wants_reflect) continue;
-                    child.kind = RayKind::Reflected;
-                    child.origin = rt::offset_point(p, ray.hit.point, ray.hit.normal);
-                    child.direction = rt::reflect(dn, ray.hit.normal);
+                    sec = rt::mirror_ray(p, ray.hit, dn);
                     child.weight = m.kr;
-                    ++s.rays.reflected;
                     s.last_event = Event::Reflect;
                 } else {
                     f.next = Next::Return;
                     if (!wants_refract) continue;
-                    const double eta = ray.hit.entering ? 1 / m.ior : m.ior;
-                    dvec3 t;
+                    sec = rt::transmitted_ray(p, ray.hit, dn, m.ior);
                     child.weight = m.kt;
-                    if (rt::refract(dn, ray.hit.normal, eta, t)) {
-                        child.kind = RayKind::Refracted;
-                        child.origin = rt::offset_point(p, ray.hit.point, -ray.hit.normal);
-                        child.direction = t;
-                        ++s.rays.refracted;
-                        s.last_event = Event::Refract;
-                    } else {
-                        child.kind = RayKind::Reflected;
-                        child.total_internal = true;
-                        child.origin = rt::offset_point(p, ray.hit.point, ray.hit.normal);
-                        child.direction = rt::reflect(dn, ray.hit.normal);
-                        ++s.rays.reflected;
-                        s.last_event = Event::TotalInternal;
-                    }
+                    s.last_event = sec.refracted ? Event::Refract : Event::TotalInternal;
                 }
+                child.kind = sec.refracted ? RayKind::Refracted : RayKind::Reflected;
+                child.total_internal = sec.total_internal;
+                child.origin = sec.origin;
+                child.direction = sec.direction;
+                ++(sec.refracted ? s.rays.refracted : s.rays.reflected);
                 const int id = static_cast<int>(s.tree.size());
                 s.tree.push_back(child);
                 s.stack.push_back({id, Next::Cast, 0, Color(0.0)});

@@ -32,6 +32,9 @@ namespace cg {
 
 struct RayTracer {
     enum class Granularity : std::uint8_t { Pixels, Rows, RayTree };
+    // A ray-tree run of an image of at most this many pixels also renders the whole image at
+    // its start, for the picture (the pixel shown inside it).
+    static constexpr long long kPreviewPixels = 96 * 72;
 
     struct Input {
         rt::Scene scene;

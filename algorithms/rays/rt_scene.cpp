@@ -22,14 +22,6 @@ std::string at(const std::string& list, std::size_t i) {
     return list + "[" + std::to_string(i) + "]";
 }
 
-void check_coordinates(dvec3 p, const std::string& field) {
-    for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(p[k]) || std::fabs(p[k]) > kMaxCoordinate)
-            throw InputError(
-                field + "[" + std::to_string(k) + "]",
-                "must be a finite number of magnitude at most 1e12 (got " + num(p[k]) + ")");
-}
-
 void check_colour(const Color& c, const std::string& field) {
     for (int k = 0; k < 3; ++k)
         if (!std::isfinite(c[k]) || c[k] < 0 || c[k] > 1e6)
@@ -48,15 +40,22 @@ void check_nonzero(dvec3 v, const std::string& field, const char* what) {
 
 }  // namespace
 
+void check_coordinates(dvec3 p, const std::string& field) {
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(p[k]) || std::fabs(p[k]) > kMaxCoordinate)
+            throw InputError(
+                field + "[" + std::to_string(k) + "]",
+                "must be a finite number of magnitude at most 1e12 (got " + num(p[k]) + ")");
+}
+
 double tree_rays(const Scene& s) {
-    bool mirrors = false, glass = false, both = false;
+    bool mirrors = false, glass = false;
     for (const Material& m : s.materials) {
-        const bool r = s.settings.reflections && (m.kr.x > 0 || m.kr.y > 0 || m.kr.z > 0);
-        const bool t = s.settings.refractions && (m.kt.x > 0 || m.kt.y > 0 || m.kt.z > 0);
-        mirrors = mirrors || r, glass = glass || t, both = both || (r && t);
+        mirrors = mirrors || (s.settings.reflections && any_positive(m.kr));
+        glass = glass || (s.settings.refractions && any_positive(m.kt));
     }
     const int d = s.settings.max_depth;
-    if (both || (mirrors && glass)) return std::ldexp(1.0, d + 1) - 1;
+    if (mirrors && glass) return std::ldexp(1.0, d + 1) - 1;
     if (mirrors || glass) return d + 1.0;
     return 1;
 }
@@ -353,13 +352,22 @@ bool refract(dvec3 d, dvec3 n, double eta, dvec3& out) {
     return true;
 }
 
-// ---- [the plain tracer] ---------------------------------------------------------------------
-
-namespace {
-bool any_positive(const Color& c) {
-    return c.x > 0 || c.y > 0 || c.z > 0;
+SecondaryRay mirror_ray(const Prepared& p, const Hit& h, dvec3 d) {
+    return {offset_point(p, h.point, h.normal), reflect(d, h.normal), false, false};
 }
-}  // namespace
+
+SecondaryRay transmitted_ray(const Prepared& p, const Hit& h, dvec3 d, double ior) {
+    const double eta = h.entering ? 1 / ior : ior;
+    dvec3 t;
+    if (!refract(d, h.normal, eta, t)) {
+        SecondaryRay r = mirror_ray(p, h, d);
+        r.total_internal = true;
+        return r;
+    }
+    return {offset_point(p, h.point, -h.normal), t, true, false};
+}
+
+// ---- [the plain tracer] ---------------------------------------------------------------------
 
 Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
             RayCounts& counts) {
@@ -382,21 +390,15 @@ Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
     if (depth >= s.settings.max_depth) return c;
     const dvec3 dn = unit(d);
     if (s.settings.reflections && any_positive(m.kr)) {
+        const SecondaryRay r = mirror_ray(p, h, dn);
         ++counts.reflected;
-        c += m.kr * trace(s, p, offset_point(p, h.point, h.normal), reflect(dn, h.normal),
-                          depth + 1, counts);
+        c += m.kr * trace(s, p, r.origin, r.direction, depth + 1, counts);
     }
     if (s.settings.refractions && any_positive(m.kt)) {
-        const double eta = h.entering ? 1 / m.ior : m.ior;
-        dvec3 t;
-        if (refract(dn, h.normal, eta, t)) {
-            ++counts.refracted;
-            c += m.kt * trace(s, p, offset_point(p, h.point, -h.normal), t, depth + 1, counts);
-        } else {  // total internal reflection: the transmitted share is reflected
-            ++counts.reflected;
-            c += m.kt * trace(s, p, offset_point(p, h.point, h.normal), reflect(dn, h.normal),
-                              depth + 1, counts);
-        }
+        // At total internal reflection the transmitted share is reflected.
+        const SecondaryRay t = transmitted_ray(p, h, dn, m.ior);
+        ++(t.refracted ? counts.refracted : counts.reflected);
+        c += m.kt * trace(s, p, t.origin, t.direction, depth + 1, counts);
     }
     return c;
 }

@@ -121,6 +121,10 @@ double pixel_work(const Scene& s);     // tree_rays × (1 + lights) × objects
 constexpr double kMaxPixelWork = 1e7;  // one pixel (one step): well under a second
 constexpr double kMaxWork = 2e10;      // the whole image: a few minutes at most
 
+// Throws InputError naming p[k] ("camera.eye[2]") unless every coordinate is finite and within
+// ±kMaxCoordinate.
+void check_coordinates(glm::dvec3 p, const std::string& field);
+
 // Throws InputError naming the field ("camera.fov_y_deg", "objects[2].material",
 // "lights[0].attenuation"). Fields are named as in the JSON scene format (rt_scene_json.hpp).
 void validate(const Scene& s);
@@ -204,6 +208,24 @@ glm::dvec3 reflect(glm::dvec3 d, glm::dvec3 n);
 // Refracted unit direction by Snell's law for unit d and unit n facing −d, η = η₁/η₂; false at
 // total internal reflection (η² (1 − cos²θ₁) > 1).
 bool refract(glm::dvec3 d, glm::dvec3 n, double eta, glm::dvec3& out);
+
+// A hit's secondary rays, as both tracers cast them (unit d, the incoming direction):
+// the mirror ray from just above the surface; and the transmitted one — refracted from just
+// below it by η = 1/ior entering and ior leaving, or, at total internal reflection, the
+// mirror ray instead.
+struct SecondaryRay {
+    glm::dvec3 origin{0.0}, direction{0.0};
+    bool refracted = false;       // a refracted ray (else a mirror ray)
+    bool total_internal = false;  // the mirror ray cast because no refracted ray exists
+};
+SecondaryRay mirror_ray(const Prepared& p, const Hit& h, glm::dvec3 d);
+SecondaryRay transmitted_ray(const Prepared& p, const Hit& h, glm::dvec3 d, double ior);
+
+// Whether any channel is positive: a material mirrors when any_positive(kr), refracts when
+// any_positive(kt).
+inline bool any_positive(const Color& c) {
+    return c.x > 0 || c.y > 0 || c.z > 0;
+}
 
 // How many rays of each kind a trace cast.
 struct RayCounts {

@@ -254,7 +254,6 @@ Scene scene_from_json(const json& j, std::initializer_list<const char*> allow) {
             s.lights.push_back(light_from(Reader(lights[i], at("lights", i))));
     }
     objects_from(r, s.materials, s);
-    validate(s);
     return s;
 }
 

@@ -28,8 +28,9 @@
 
 namespace cg::rt {
 
-// Reads a scene object (the fields above; `allow` lists other top-level fields the caller
-// reads itself, such as "stepping"), then validates it.
+// Reads a scene object strictly (the fields above, their types and names; `allow` lists other
+// top-level fields the caller reads itself, such as "stepping"). The values are checked by
+// rt::validate, which a run calls at its start (RayTracer::start, render-scene).
 Scene scene_from_json(const json& j, std::initializer_list<const char*> allow = {});
 json scene_to_json(const Scene& s);
 

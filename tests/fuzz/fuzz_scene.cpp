@@ -12,6 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         input = cg::parse_json(text);
         scene = cg::rt::scene_from_json(input, {"stepping"});
+        cg::rt::validate(scene);
         (void)cg::rt::scene_to_json(scene).dump();
     } catch (const cg::InputError&) {
         return 0;
@@ -25,7 +26,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (img.rays.primary != img.rgba.size()) cg::fuzz::fail("one primary ray per pixel");
     // The scene written back reads the same.
     const cg::json written = cg::rt::scene_to_json(scene);
-    if (cg::rt::scene_to_json(cg::rt::scene_from_json(written)) != written)
+    const cg::rt::Scene again = cg::rt::scene_from_json(written);
+    cg::rt::validate(again);
+    if (cg::rt::scene_to_json(again) != written)
         cg::fuzz::fail("a scene does not survive writing and reading back");
     return 0;
 }

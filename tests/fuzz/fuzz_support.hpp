@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/registry.hpp"
+#include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
 
 namespace cg::fuzz {
@@ -35,7 +36,8 @@ inline bool too_costly(const Algorithm& a, const json& input) {
         const rt::Scene s = rt::scene_from_json(input, {"stepping"});
         const bool tree = input.contains("stepping") && input["stepping"].is_object() &&
                           input["stepping"].value("granularity", "") == "ray-tree";
-        const double pixels = tree ? 1 + 96.0 * 72 : double(s.camera.width) * s.camera.height;
+        const double pixels =
+            tree ? 1.0 + RayTracer::kPreviewPixels : double(s.camera.width) * s.camera.height;
         return rt::pixel_work(s) * pixels > 2e6;
     } catch (const InputError&) {
         return false;  // create() refuses it

@@ -35,9 +35,11 @@ const cg::Algorithm& tracer() {
     return *registry().find("ray-tracer");
 }
 
-// A scene from JSON text (the scene file format).
+// A scene from JSON text (the scene file format), validated.
 rt::Scene scene(const std::string& text) {
-    return rt::scene_from_json(cg::parse_json(text), {"stepping"});
+    rt::Scene s = rt::scene_from_json(cg::parse_json(text), {"stepping"});
+    rt::validate(s);
+    return s;
 }
 
 // One ray's tree, stepped to the end: the result and the events in order.
