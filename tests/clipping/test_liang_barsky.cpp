@@ -10,6 +10,7 @@
 #include "clipping/liang_barsky.hpp"
 #include "core/timeline.hpp"
 #include "io/registry.hpp"
+#include "support/traced.hpp"
 
 using cg::LiangBarsky;
 using glm::dvec2;
@@ -75,11 +76,7 @@ Traced run_traced(const LiangBarsky::Input& in) {
     return t;
 }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> e;
-    for (const auto& s : t.steps) e.push_back(s.event);
-    return e;
-}
+using cg::test::events;
 
 const LiangBarsky::Window kWindow{1, 1, 5, 4};  // [1, 5] x [1, 4]
 

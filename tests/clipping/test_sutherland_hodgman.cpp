@@ -15,6 +15,7 @@
 #include "core/rng.hpp"
 #include "core/timeline.hpp"
 #include "io/registry.hpp"
+#include "support/traced.hpp"
 
 using cg::SutherlandHodgman;
 using glm::dvec2;
@@ -40,11 +41,7 @@ Traced run_traced(const SutherlandHodgman::Input& in) {
     return t;
 }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> e;
-    for (const auto& s : t.steps) e.push_back(s.event);
-    return e;
-}
+using cg::test::events;
 
 // "setup", then per window edge its cases and "edge-done", then "done".
 std::vector<std::string> expected_events(const std::vector<std::vector<std::string>>& passes,

@@ -98,11 +98,7 @@ BezierPatch::Input bilinear(double s, double t) {
     return in;
 }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> out;
-    for (const auto& s : t.steps) out.push_back(s.event);
-    return out;
-}
+using cg::test::events;
 
 }  // namespace
 

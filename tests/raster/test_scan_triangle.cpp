@@ -18,6 +18,7 @@
 #include "io/registry.hpp"
 #include "raster/orient2d.hpp"
 #include "raster/scan_triangle.hpp"
+#include "support/traced.hpp"
 
 using cg::ScanTriangle;
 using glm::dvec2;
@@ -98,11 +99,7 @@ Traced run_traced(const ScanTriangle::Input& in) {
     return t;
 }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> e;
-    for (const auto& s : t.steps) e.push_back(s.event);
-    return e;
-}
+using cg::test::events;
 
 using Spans = std::vector<std::array<int, 3>>;
 

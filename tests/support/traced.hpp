@@ -2,6 +2,7 @@
 // for tests that check the narration and the numbers of one input.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/step.hpp"
@@ -25,6 +26,14 @@ Traced<A> run_traced(const typename A::Input& in) {
     }
     t.result = A::result(s);
     return t;
+}
+
+// The event ids of a traced run's steps, in order: anything with a `steps` list of StepInfo.
+template <class T>
+std::vector<std::string> events(const T& traced) {
+    std::vector<std::string> e;
+    for (const StepInfo& s : traced.steps) e.push_back(s.event);
+    return e;
 }
 
 }  // namespace cg::test

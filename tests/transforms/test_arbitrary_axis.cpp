@@ -23,11 +23,7 @@ using Traced = cg::test::Traced<ArbitraryAxis>;
 
 Traced run_traced(const ArbitraryAxis::Input& in) { return cg::test::run_traced<ArbitraryAxis>(in); }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> e;
-    for (const auto& s : t.steps) e.push_back(s.event);
-    return e;
-}
+using cg::test::events;
 
 // A matrix given by rows, as glm (column-major).
 dmat3 from_rows(std::initializer_list<std::initializer_list<double>> rows) {

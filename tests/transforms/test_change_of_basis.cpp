@@ -30,11 +30,7 @@ Traced run_traced(const ChangeOfBasis::Input& in) {
     return cg::test::run_traced<ChangeOfBasis>(in);
 }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> e;
-    for (const auto& s : t.steps) e.push_back(s.event);
-    return e;
-}
+using cg::test::events;
 
 dmat4 from_rows(std::initializer_list<std::initializer_list<double>> rows) {
     dmat4 m(0.0);

@@ -31,11 +31,7 @@ using Traced = cg::test::Traced<Perspective>;
 
 Traced run_traced(const Perspective::Input& in) { return cg::test::run_traced<Perspective>(in); }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> e;
-    for (const auto& s : t.steps) e.push_back(s.event);
-    return e;
-}
+using cg::test::events;
 
 std::array<double, 4> row(const dmat4& m, int r) { return {m[0][r], m[1][r], m[2][r], m[3][r]}; }
 

@@ -14,6 +14,7 @@
 #include "core/timeline.hpp"
 #include "io/registry.hpp"
 #include "viewing/window_viewport.hpp"
+#include "support/traced.hpp"
 
 using cg::WindowViewport;
 using glm::dvec2;
@@ -38,11 +39,7 @@ Traced run_traced(const WindowViewport::Input& in) {
     return t;
 }
 
-std::vector<std::string> events(const Traced& t) {
-    std::vector<std::string> e;
-    for (const auto& s : t.steps) e.push_back(s.event);
-    return e;
-}
+using cg::test::events;
 
 // Row r of a glm matrix (glm is m[column][row]).
 std::array<double, 3> row(const glm::dmat3& m, int r) {
