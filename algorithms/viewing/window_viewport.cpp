@@ -14,6 +14,7 @@ using glm::dmat3;
 using glm::dvec2;
 using Rect = WindowViewport::Rect;
 using Phase = WindowViewport::Phase;
+using Form = WindowViewport::Form;
 
 // ---- [helpers] ------------------------------------------------------------------------------
 
@@ -68,27 +69,45 @@ void check_finite(double v, const std::string& field) {
     if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
 }
 
-void check_rect(const Rect& r, const std::string& name) {
-    check_finite(r.xmin, name + ".xmin");
-    check_finite(r.ymin, name + ".ymin");
-    check_finite(r.xmax, name + ".xmax");
-    check_finite(r.ymax, name + ".ymax");
-    if (r.xmax == r.xmin)
-        throw InputError(name + ".xmax", "must be greater than " + name + ".xmin: the " + name +
-                                             " has zero width (xmin = xmax = " + num(r.xmin) + ")");
-    if (r.xmax < r.xmin)
-        throw InputError(name + ".xmax", "must be greater than " + name + ".xmin (" +
-                                             num(r.xmax) + " < " + num(r.xmin) +
-                                             "): the rectangle is inverted");
-    if (r.ymax == r.ymin)
-        throw InputError(name + ".ymax", "must be greater than " + name + ".ymin: the " + name +
-                                             " has zero height (ymin = ymax = " + num(r.ymin) +
-                                             ")");
-    if (r.ymax < r.ymin)
-        throw InputError(name + ".ymax", "must be greater than " + name + ".ymin (" +
-                                             num(r.ymax) + " < " + num(r.ymin) +
-                                             "): the rectangle is inverted");
+// The input's name for one of a rectangle's numbers: corner 0 or 1 (min or max), axis 0 or 1.
+// A viewport given with "y_down" holds the row numbers swapped (its ymax is the image of the
+// window's ymin); one given as "corners" names them by index.
+std::string field_name(const std::string& name, Form form, int corner, int axis) {
+    if (form == Form::Corners)
+        return name + ".corners[" + std::to_string(corner) + "][" + std::to_string(axis) + "]";
+    if (form == Form::YDown && axis == 1) corner = 1 - corner;
+    return name + "." + (axis ? "y" : "x") + (corner ? "max" : "min");
 }
+
+// A rectangle that can be mapped: finite, with a width and a height, and — the window always,
+// the viewport when given as a plain rectangle — min < max on both axes. `hint` follows the
+// "inverted" error: how a flipped viewport may be given instead.
+void check_rect(const Rect& r, const std::string& name, Form form, const std::string& hint) {
+    auto field = [&](int corner, int axis) { return field_name(name, form, corner, axis); };
+    check_finite(r.xmin, field(0, 0));
+    check_finite(r.ymin, field(0, 1));
+    check_finite(r.xmax, field(1, 0));
+    check_finite(r.ymax, field(1, 1));
+    const bool ordered = form == Form::Rect;
+    const std::string relation = ordered ? "must be greater than " : "must differ from ";
+    if (r.xmax == r.xmin)
+        throw InputError(field(1, 0), relation + field(0, 0) + ": the " + name +
+                                          " has zero width (xmin = xmax = " + num(r.xmin) + ")");
+    if (ordered && r.xmax < r.xmin)
+        throw InputError(field(1, 0), "must be greater than " + field(0, 0) + " (" +
+                                          num(r.xmax) + " < " + num(r.xmin) +
+                                          "): the rectangle is inverted" + hint);
+    if (r.ymax == r.ymin)
+        throw InputError(field(1, 1), relation + field(0, 1) + ": the " + name +
+                                          " has zero height (ymin = ymax = " + num(r.ymin) + ")");
+    if (ordered && r.ymax < r.ymin)
+        throw InputError(field(1, 1), "must be greater than " + field(0, 1) + " (" +
+                                          num(r.ymax) + " < " + num(r.ymin) +
+                                          "): the rectangle is inverted" + hint);
+}
+
+bool flipped_x(const Rect& v) { return v.xmax < v.xmin; }
+bool flipped_y(const Rect& v) { return v.ymax < v.ymin; }
 
 bool finite(const dmat3& m) {
     for (int c = 0; c < 3; ++c)
@@ -111,8 +130,8 @@ const Spec& WindowViewport::spec() {
         "Window to viewport through NDC",
         "Windows, Viewports, NDC",
         {
-            "Lw, Hw ← window width, height;  Lv, Hv ← viewport width, height",
-            "if Lw/Hw ≠ Lv/Hv: warn, shapes will be distorted",
+            "Lw, Hw ← window width, height;  Lv, Hv ← viewport's (signed: < 0 is a flip)",
+            "if |Lw/Hw| ≠ |Lv/Hv|: warn, shapes will be distorted",
             "M_ndc ← [2/Lw 0 −(xw_max+xw_min)/Lw; 0 2/Hw −(yw_max+yw_min)/Hw; 0 0 1]",
             "for each point P:  P_ndc ← M_ndc P           ▷ the window goes to [−1, 1]²",
             "M_vp ← [Lv/2 0 (xv_max+xv_min)/2; 0 Hv/2 (yv_max+yv_min)/2; 0 0 1]",
@@ -135,8 +154,12 @@ const Spec& WindowViewport::spec() {
 // ---- [validate] -----------------------------------------------------------------------------
 
 void WindowViewport::validate(const Input& in) {
-    check_rect(in.window, "window");
-    check_rect(in.viewport, "viewport");
+    check_rect(in.window, "window", Form::Rect, "");
+    // The viewport's corners may come in either order when the input says it means a flip.
+    const std::string flip_hint =
+        "; for a device whose y runs downward add \"y_down\": true, or give the images of the "
+        "window's corners as \"corners\": [[x, y], [x, y]]";
+    check_rect(in.viewport, "viewport", in.form, flip_hint);
     for (std::size_t k = 0; k < in.points.size(); ++k) {
         check_finite(in.points[k].x, "points[" + std::to_string(k) + "][0]");
         check_finite(in.points[k].y, "points[" + std::to_string(k) + "][1]");
@@ -180,8 +203,8 @@ void WindowViewport::advance(State& s) {
     const int n = static_cast<int>(s.in.points.size());
     switch (s.phase) {
         case Phase::Aspect:  // Compare the shapes of window and viewport
-            s.aspect_window = width(s.in.window) / height(s.in.window);
-            s.aspect_viewport = width(s.in.viewport) / height(s.in.viewport);
+            s.aspect_window = std::fabs(width(s.in.window) / height(s.in.window));
+            s.aspect_viewport = std::fabs(width(s.in.viewport) / height(s.in.viewport));
             s.distorted = aspects_differ(s.aspect_window, s.aspect_viewport);
             s.phase = Phase::NdcMatrix;
             return;
@@ -245,28 +268,46 @@ bool inside_ndc(dvec2 p) { return std::fabs(p.x) <= 1 && std::fabs(p.y) <= 1; }
 
 std::string point_name(int k) { return "P" + std::to_string(k); }
 
+// What a negative viewport size means, for the narration: "" when nothing is flipped.
+std::string flip_note(const Rect& v) {
+    const bool fx = flipped_x(v), fy = flipped_y(v);
+    if (!fx && !fy) return "";
+    std::string axes = fx && fy ? "Lv < 0 and Hv < 0: both axes are" : fx ? "Lv < 0: x is" : "Hv < 0: y is";
+    return " " + axes + " flipped (a negative scale" +
+           (fy ? ": the device's rows run downward, so the window's top lands on the smaller row"
+               : "") +
+           ").";
+}
+
 void narrate_aspect(const WindowViewport::State& s, StepInfo& info) {
     const Rect &w = s.in.window, &v = s.in.viewport;
     const double sx = width(v) / width(w), sy = height(v) / height(w);
     const std::string sizes = "Window " + num(width(w)) + " × " + num(height(w)) +
                               " (aspect Lw/Hw = " + num(s.aspect_window, 4) + "), viewport " +
-                              num(width(v)) + " × " + num(height(v)) + " (aspect Lv/Hv = " +
+                              num(width(v)) + " × " + num(height(v)) + (flipped_x(v) || flipped_y(v) ? " (aspect |Lv/Hv| = " : " (aspect Lv/Hv = ") +
                               num(s.aspect_viewport, 4) + ")";
+    const bool flipped = flipped_x(v) != flipped_y(v);  // Lv/Hv < 0: compare its size
     info.math = "\\frac{L_w}{H_w} = \\frac{" + tex(width(w)) + "}{" + tex(height(w)) +
                 "} = " + tex(s.aspect_window, 4) + (s.distorted ? " \\ne " : " = ") +
-                tex(s.aspect_viewport, 4) + " = \\frac{" + tex(width(v)) + "}{" + tex(height(v)) +
-                "} = \\frac{L_v}{H_v}";
+                tex(s.aspect_viewport, 4) + " = " + (flipped ? "\\left|" : "") + "\\frac{" +
+                tex(width(v)) + "}{" + tex(height(v)) + "}" + (flipped ? "\\right|" : "") +
+                " = " + (flipped ? "\\left|\\frac{L_v}{H_v}\\right|" : "\\frac{L_v}{H_v}");
     if (s.distorted) {
         info.event = "distortion";
         info.line = kLineAspect;
         info.narration = sizes + ": the aspect ratios differ. x will be scaled by Lv/Lw = " +
                          num(sx, 4) + " but y by Hv/Hw = " + num(sy, 4) +
-                         ", so shapes come out stretched (a circle becomes an ellipse).";
+                         ", so shapes come out stretched (a circle becomes an ellipse)." +
+                         flip_note(v);
     } else {
         info.event = "aspect-match";
         info.line = kLineAspect;
-        info.narration = sizes + ": the aspect ratios agree, both axes scale by " + num(sx, 4) +
-                         " and shapes keep their proportions.";
+        info.narration =
+            sizes + ": the aspect ratios agree, " +
+            (sx == sy ? "both axes scale by " + num(sx, 4)
+                      : "x scales by " + num(sx, 4) + " and y by " + num(sy, 4) +
+                            ", the same size") +
+            " and shapes keep their proportions." + flip_note(v);
     }
 }
 
@@ -315,7 +356,7 @@ void narrate_device_matrix(const WindowViewport::State& s, StepInfo& info) {
                      "/2 = " + num(m[1][1]) + ", then shift to the viewport's centre " +
                      num(dvec2(m[2][0], m[2][1])) + ": M_vp = " + matrix_text(m) +
                      ". (−1, −1) and (1, 1) go to " + num(dvec2(v.xmin, v.ymin)) + " and " +
-                     num(dvec2(v.xmax, v.ymax)) + ".";
+                     num(dvec2(v.xmax, v.ymax)) + "." + flip_note(v);
     info.math = "M_{vp} = \\begin{bmatrix} \\frac{L_v}{2} & 0 & \\frac{x_{v,max} + x_{v,min}}{2} "
                 "\\\\ 0 & \\frac{H_v}{2} & \\frac{y_{v,max} + y_{v,min}}{2} \\\\ 0 & 0 & 1 "
                 "\\end{bmatrix} = " + matrix_tex(m);
@@ -408,8 +449,8 @@ WindowViewport::Result WindowViewport::result(const State& s) {
 // Flattened like run_to_end, so that the comparison is between two fully inlined loops.
 [[gnu::flatten]] WindowViewport::Result WindowViewport::map(const Input& in) {
     Result r;
-    r.aspect_window = width(in.window) / height(in.window);
-    r.aspect_viewport = width(in.viewport) / height(in.viewport);
+    r.aspect_window = std::fabs(width(in.window) / height(in.window));
+    r.aspect_viewport = std::fabs(width(in.viewport) / height(in.viewport));
     r.distorted = aspects_differ(r.aspect_window, r.aspect_viewport);
     r.ndc_from_window = ndc_from(in.window);
     r.device_from_ndc = device_from(in.viewport);
@@ -431,13 +472,17 @@ WindowViewport::Result WindowViewport::result(const State& s) {
 void WindowViewport::draw(const State& s, Scene& scene) {
     const Rect &w = s.in.window, &v = s.in.viewport;
     const double h = height(w), gap = 0.5 * std::max(h, 0.25 * width(w)), rise = 0.4 * h;
-    const double ndc_x0 = w.xmax + gap, vp_x0 = ndc_x0 + h + gap, vp_scale = h / height(v);
+    const double ndc_x0 = w.xmax + gap, vp_x0 = ndc_x0 + h + gap;
+    // The viewport panel is drawn as the device shows it, upright: a flipped axis (negative Lv
+    // or Hv) runs the other way in the picture, so the window's image is not mirrored and the
+    // corner labels show which way the device counts.
+    const double sx = h / std::fabs(height(v)) * (flipped_x(v) ? -1 : 1);
+    const double sy = h / std::fabs(height(v)) * (flipped_y(v) ? -1 : 1);
     auto ndc_at = [&](dvec2 q) {
         return dvec2(ndc_x0 + (q.x + 1) / 2 * h, w.ymin + rise + (q.y + 1) / 2 * h);
     };
     auto device_at = [&](dvec2 d) {
-        return dvec2(vp_x0 + (d.x - v.xmin) * vp_scale,
-                     w.ymin + 2 * rise + (d.y - v.ymin) * vp_scale);
+        return dvec2(vp_x0 + (d.x - v.xmin) * sx, w.ymin + 2 * rise + (d.y - v.ymin) * sy);
     };
     auto rect = [](dvec2 lo, dvec2 hi) {
         return std::vector<dvec2>{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
@@ -462,8 +507,16 @@ void WindowViewport::draw(const State& s, Scene& scene) {
         {{(w.xmin + w.xmax) / 2, w.ymax}, "window (world) " + range(w), {Role::Window}});
     scene.labels.push_back(
         {{(ndc_lo.x + ndc_hi.x) / 2, ndc_hi.y}, "NDC [−1, 1] × [−1, 1]", {Role::Neutral}});
-    scene.labels.push_back(
-        {{(vp_lo.x + vp_hi.x) / 2, vp_hi.y}, "viewport (device) " + range(v), {Role::Window}});
+    const bool flipped = flipped_x(v) || flipped_y(v);
+    const std::string vp_caption =
+        flipped ? std::string("viewport (device, ") + (flipped_y(v) ? "y down" : "x flipped") +
+                      "): window corners → " + num(dvec2(v.xmin, v.ymin)) + ", " +
+                      num(dvec2(v.xmax, v.ymax))
+                : "viewport (device) " + range(v);
+    scene.labels.push_back({{(vp_lo.x + vp_hi.x) / 2, vp_hi.y}, vp_caption, {Role::Window}});
+    if (flipped)  // the device's own coordinates at the two corners the window's corners reach
+        for (const dvec2 c : {dvec2(v.xmin, v.ymin), dvec2(v.xmax, v.ymax)})
+            scene.labels.push_back({device_at(c), num(c), {Role::Neutral}});
     if (s.phase != Phase::Aspect && s.distorted)
         scene.labels.push_back({{(vp_lo.x + vp_hi.x) / 2, vp_lo.y},
                                 "distorted: aspect " + num(s.aspect_window, 4) + " ≠ " +

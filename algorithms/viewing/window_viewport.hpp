@@ -16,14 +16,20 @@
 //
 // with Lw, Hw the window's width and height and Lv, Hv the viewport's. NDC is the square
 // [−1, 1] × [−1, 1]: the window's corners go to (−1, −1) and (1, 1). Device coordinates have
-// y up and the origin at the bottom-left, like everything else in the project (a device whose
-// rows count downwards would flip y in one more step, which we do not take). Points outside the
+// y up and the origin at the bottom-left, like everything else in the project — unless the
+// viewport says otherwise. A screen's pixel rows run downward, so an exam puts the window onto
+// a 1024×768 screen with its bottom-left corner at pixel (0, 768) and its top-right at
+// (1024, 0). The viewport is therefore given by the images of the window's two corners:
+// (xv_min, yv_min) is where the window's (xw_min, yw_min) lands and (xv_max, yv_max) where
+// (xw_max, yw_max) lands, and Lv = xv_max − xv_min, Hv = yv_max − yv_min are signed. A negative
+// size is a flip (a negative scale); the formulas above hold unchanged. Points outside the
 // window are mapped too, outside the viewport: this is a mapping, not clipping. Each point is
 // computed with the formula its matrix row stands for (2 (x − xw_min)/Lw − 1 rather than
 // m00·x + m02: the same number, rounded less, so the window's corners land exactly on ±1).
 //
-// Distortion: shapes keep their proportions only when both axes scale alike, Lv/Lw = Hv/Hw,
-// i.e. when the aspect ratios width/height of window and viewport agree. They are compared
+// Distortion: shapes keep their proportions only when both axes scale alike, |Lv/Lw| = |Hv/Hw|
+// (a flip mirrors a shape but does not stretch it), i.e. when the aspect ratios |width/height|
+// of window and viewport agree. They are compared
 // with a relative tolerance of 1e-9 (so 4/3 typed as 1.3333333333 and computed as 4/3 agree);
 // when they differ the run warns ("distortion").
 //
@@ -47,13 +53,23 @@ struct WindowViewport {
     static constexpr double kAspectTolerance = 1e-9;  // relative
 
     struct Rect {
-        double xmin = 0, ymin = 0, xmax = 0, ymax = 0;  // xmin < xmax, ymin < ymax
+        double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
         bool operator==(const Rect&) const = default;
     };
+    // How the viewport was given: kept to tell the student, and to write the input back.
+    enum class Form : std::uint8_t {
+        Rect,     // {"xmin", "ymin", "xmax", "ymax"} on a y-up device: min < max on both axes
+        YDown,    // the same rectangle on a device whose rows run downward ("y_down": true)
+        Corners,  // {"corners": [A, B]}: A, B the images of the window's two corners, any order
+    };
     struct Input {
-        Rect window;                     // world coordinates
-        Rect viewport;                   // device coordinates, y up
+        Rect window;  // world coordinates; xmin < xmax, ymin < ymax
+        // Device coordinates: (xmin, ymin) is the image of the window's (xmin, ymin) corner and
+        // (xmax, ymax) the image of its (xmax, ymax) corner. With Form::Rect a rectangle with
+        // min < max; otherwise either order on either axis (a flip), but never zero width/height.
+        Rect viewport;
         std::vector<glm::dvec2> points;  // world points to map; may be empty
+        Form form = Form::Rect;
         bool operator==(const Input&) const = default;
     };
     struct Result {
@@ -63,7 +79,7 @@ struct WindowViewport {
         glm::dmat3 device_from_ndc{1.0};
         glm::dmat3 device_from_window{1.0};  // the product of the two
         bool distorted = false;              // the aspect ratios differ
-        double aspect_window = 0, aspect_viewport = 0;  // width / height
+        double aspect_window = 0, aspect_viewport = 0;  // |width / height|
         bool operator==(const Result&) const = default;
     };
 

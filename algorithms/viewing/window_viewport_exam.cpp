@@ -4,6 +4,8 @@
 // integer points near the window. About one problem in three scales x and y differently
 // (distorted); now and then a point lies outside the window (its NDC coordinates leave
 // [−1, 1]) or sits on a corner, and now and then there are no points at all (only the matrices).
+// One problem in four puts the viewport on a screen whose pixel rows run downward (y down), as
+// exam questions do: the window's bottom edge goes to the viewport's largest row.
 #include <algorithm>
 
 #include "core/format.hpp"
@@ -12,6 +14,8 @@
 namespace cg {
 
 namespace {
+
+using Form = WindowViewport::Form;
 
 double pick(Rng& rng, std::initializer_list<int> values) {
     const auto k =
@@ -52,17 +56,39 @@ WindowViewport::Input WindowViewport::exam_input(Rng& rng) {
         if (std::find(in.points.begin(), in.points.end(), p) == in.points.end())
             in.points.push_back(p);
     }
+    if (rng.chance(0.25)) {  // rows counted from the top: the window's ymin goes to row ymax
+        in.form = Form::YDown;
+        std::swap(v.ymin, v.ymax);
+    }
     return in;
 }
 
 std::string WindowViewport::question(const Input& in) {
-    auto range = [](const Rect& r) {
-        return "[" + num(r.xmin) + ", " + num(r.xmax) + "] × [" + num(r.ymin) + ", " + num(r.ymax) +
-               "]";
+    auto range = [](double x0, double x1, double y0, double y1) {
+        return "[" + num(x0) + ", " + num(x1) + "] × [" + num(y0) + ", " + num(y1) + "]";
     };
-    std::string q = "Map the window " + range(in.window) + " (world coordinates) to the viewport " +
-                    range(in.viewport) +
-                    " (device coordinates, y up) through normalised device coordinates, NDC = "
+    const Rect &w = in.window, &v = in.viewport;
+    std::string device;
+    switch (in.form) {
+        case Form::Rect:
+            device = "the viewport " + range(v.xmin, v.xmax, v.ymin, v.ymax) +
+                     " (device coordinates, y up)";
+            break;
+        case Form::YDown:
+            device = "the viewport " + range(v.xmin, v.xmax, v.ymax, v.ymin) +
+                     " of a screen whose pixel rows are numbered downward from the top (y down: "
+                     "the window's bottom-left corner goes to " + num(glm::dvec2(v.xmin, v.ymin)) +
+                     " and its top-right corner to " + num(glm::dvec2(v.xmax, v.ymax)) + ")";
+            break;
+        case Form::Corners:
+            device = "the device, its corner " + num(glm::dvec2(w.xmin, w.ymin)) + " going to " +
+                     num(glm::dvec2(v.xmin, v.ymin)) + " and " + num(glm::dvec2(w.xmax, w.ymax)) +
+                     " to " + num(glm::dvec2(v.xmax, v.ymax));
+            break;
+    }
+    std::string q = "Map the window " + range(w.xmin, w.xmax, w.ymin, w.ymax) +
+                    " (world coordinates) to " + device +
+                    " through normalised device coordinates, NDC = "
                     "[−1, 1] × [−1, 1]. Give the 3×3 homogeneous matrices (as rows, acting on "
                     "column vectors (x, y, 1)) window_to_ndc and ndc_to_device, and their product "
                     "matrix (window to device)";

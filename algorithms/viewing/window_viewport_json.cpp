@@ -1,11 +1,19 @@
 // Window-to-viewport's JSON:
-//   input  {"window": {"xmin", "ymin", "xmax", "ymax"}, "viewport": {"xmin", "ymin", "xmax",
-//   "ymax"},
+//   input  {"window": {"xmin", "ymin", "xmax", "ymax"}, "viewport": VIEWPORT,
 //           "points": [[x, y], …] (optional, may be empty)}
+//   VIEWPORT is one of
+//     {"xmin", "ymin", "xmax", "ymax"}                 a rectangle on a y-up device (min < max)
+//     {"xmin", "ymin", "xmax", "ymax", "y_down": true} the same rectangle on a device whose rows
+//                                                      run downward: the window's bottom edge
+//                                                      lands on row ymax, its top on row ymin
+//     {"corners": [[x, y], [x, y]]}                    the images of the window's (xmin, ymin)
+//                                                      and (xmax, ymax) corners, in any order on
+//                                                      either axis (a flip is a negative scale)
 //   result {"ndc": [[x, y], …], "device": [[x, y], …],
 //           "matrix": window → device, 3×3 as rows,
 //           "window_to_ndc": 3×3 rows, "ndc_to_device": 3×3 rows,
 //           "distorted": bool, "aspect_window": Lw/Hw, "aspect_viewport": Lv/Hv}
+#include "core/format.hpp"
 #include "io/registry.hpp"
 #include "viewing/window_viewport.hpp"
 
@@ -17,6 +25,57 @@ WindowViewport::Rect rect(const Reader& r, const char* key) {
     Reader o = r.object(key);
     o.only({"xmin", "ymin", "xmax", "ymax"});
     return {o.number("xmin"), o.number("ymin"), o.number("xmax"), o.number("ymax")};
+}
+
+// The viewport as the input gives it, into the images of the window's two corners.
+WindowViewport::Rect viewport(const Reader& r, WindowViewport::Form& form) {
+    using Form = WindowViewport::Form;
+    Reader o = r.object("viewport");
+    if (o.has("corners")) {
+        o.only({"corners"});
+        const std::vector<glm::dvec2> c = o.points2("corners");
+        if (c.size() != 2)
+            throw InputError("viewport.corners",
+                             "must be two points (the images of the window's corners (xmin, "
+                             "ymin) and (xmax, ymax)), got " + std::to_string(c.size()));
+        form = Form::Corners;
+        return {c[0].x, c[0].y, c[1].x, c[1].y};
+    }
+    o.only({"xmin", "ymin", "xmax", "ymax", "y_down"});
+    const bool y_down = o.has("y_down") && o.boolean("y_down");
+    const double xmin = o.number("xmin"), ymin = o.number("ymin"), xmax = o.number("xmax"),
+                 ymax = o.number("ymax");
+    if (!y_down) {
+        form = Form::Rect;
+        return {xmin, ymin, xmax, ymax};
+    }
+    // Rows run downward: the window's bottom (its ymin) goes to the larger row number.
+    form = Form::YDown;
+    if (xmax < xmin)
+        throw InputError("viewport.xmax", "must be greater than viewport.xmin (" + num(xmax) +
+                                              " < " + num(xmin) + "): the rectangle is inverted");
+    if (ymax < ymin)
+        throw InputError("viewport.ymax",
+                         "must be greater than viewport.ymin (" + num(ymax) + " < " + num(ymin) +
+                             "): with \"y_down\" the rectangle is still given by its smallest "
+                             "and largest row");
+    return {xmin, ymax, xmax, ymin};
+}
+
+json viewport_json(const WindowViewport::Rect& v, WindowViewport::Form form) {
+    using Form = WindowViewport::Form;
+    switch (form) {
+        case Form::Corners:
+            return json{{"corners", {nice_point({v.xmin, v.ymin}), nice_point({v.xmax, v.ymax})}}};
+        case Form::YDown:
+            return json{{"xmin", nice_number(v.xmin)}, {"ymin", nice_number(v.ymax)},
+                        {"xmax", nice_number(v.xmax)}, {"ymax", nice_number(v.ymin)},
+                        {"y_down", true}};
+        case Form::Rect:
+            break;
+    }
+    return json{{"xmin", nice_number(v.xmin)}, {"ymin", nice_number(v.ymin)},
+                {"xmax", nice_number(v.xmax)}, {"ymax", nice_number(v.ymax)}};
 }
 
 json rect_json(const WindowViewport::Rect& r) {
@@ -45,7 +104,7 @@ struct JsonIo<WindowViewport> {
         r.only({"window", "viewport", "points"});
         WindowViewport::Input in;
         in.window = rect(r, "window");
-        in.viewport = rect(r, "viewport");
+        in.viewport = viewport(r, in.form);
         if (r.has("points")) in.points = r.points2("points");
         return in;
     }
@@ -54,7 +113,7 @@ struct JsonIo<WindowViewport> {
         json ps = json::array();
         for (const glm::dvec2& p : in.points) ps.push_back(nice_point(p));
         return json{{"window", rect_json(in.window)},
-                    {"viewport", rect_json(in.viewport)},
+                    {"viewport", viewport_json(in.viewport, in.form)},
                     {"points", std::move(ps)}};
     }
 

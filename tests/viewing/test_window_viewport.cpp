@@ -91,6 +91,41 @@ TEST_CASE("window-viewport: exam cases worked by hand", "[viewing][window-viewpo
         CHECK_THAT(t.steps[5].narration, Catch::EndsWith("outside [−1, 1]²: the point lies outside "
                                                          "the window (mapping does not clip)."));
     }
+    SECTION("a screen whose rows run downward: the window's corners to (0, 768) and (1024, 0)") {
+        // Window [0, 8] × [0, 6] onto a 1024×768 screen with the origin at its top-left: x_d =
+        // 128 x, y_d = 768 − 128 y. Given either way, the same map.
+        WindowViewport::Input corners{{0, 0, 8, 6}, {0, 768, 1024, 0}, {{0, 0}, {8, 6}, {2, 3}}};
+        corners.form = WindowViewport::Form::Corners;
+        const Traced t = run_traced(corners);
+        CHECK(t.steps[0].event == "aspect-match");  // |1024/−768| = 8/6: a flip, no stretch
+        CHECK_FALSE(t.result.distorted);
+        CHECK(t.result.aspect_viewport == Approx(4.0 / 3));
+        CHECK(t.result.device == std::vector<dvec2>{{0, 768}, {1024, 0}, {256, 384}});
+        CHECK(row(t.result.device_from_ndc, 1) == std::array<double, 3>{0, -384, 384});
+        CHECK(row(t.result.device_from_window, 0) == std::array<double, 3>{128, 0, 0});
+        CHECK(row(t.result.device_from_window, 1) == std::array<double, 3>{0, -128, 768});
+        CHECK_THAT(t.steps[0].narration,
+                   Catch::Contains("viewport 1024 × -768 (aspect |Lv/Hv| = 1.333)") &&
+                       Catch::Contains("Hv < 0: y is flipped (a negative scale"));
+        CHECK_THAT(t.steps[5].narration, Catch::Contains("y by Hv/2 = -768/2 = -384"));
+
+        const cg::Registry registry = cg::builtin_registry();
+        const cg::Algorithm& a = *registry.find("window-viewport");
+        const std::string window = R"("window": {"xmin": 0, "ymin": 0, "xmax": 8, "ymax": 6})";
+        for (const std::string viewport :
+             {R"({"corners": [[0, 768], [1024, 0]]})",
+              R"({"xmin": 0, "ymin": 0, "xmax": 1024, "ymax": 768, "y_down": true})"}) {
+            CAPTURE(viewport);
+            const cg::json in = cg::parse_json("{" + window + R"(, "viewport": )" + viewport +
+                                               R"(, "points": [[0, 0], [8, 6], [2, 3]]})");
+            auto run = a.create(in);
+            while (!run->done()) run->step(nullptr);
+            const cg::json r = a.result(*run);
+            CHECK(r["device"] == cg::json::parse("[[0, 768], [1024, 0], [256, 384]]"));
+            CHECK(r["matrix"][1] == cg::json::parse("[0, -128, 768]"));
+            CHECK(r["distorted"] == false);
+        }
+    }
     SECTION("no points: only the matrices") {
         const Traced t = run_traced({{-1, -1, 1, 1}, {0, 0, 200, 100}, {}});
         CHECK(events(t) == std::vector<std::string>{"distortion", "window-to-ndc",
@@ -143,6 +178,11 @@ TEST_CASE("window-viewport: 5,000 random maps agree with GLM matrices and the cl
             in.viewport.xmax = in.viewport.xmin + scale * (in.window.xmax - in.window.xmin);
             in.viewport.ymax = in.viewport.ymin + scale * (in.window.ymax - in.window.ymin);
         }
+        // Devices whose rows (or, rarely, columns) run the other way: the viewport given by the
+        // images of the window's corners, flipped.
+        if (trial % 3 == 1) std::swap(in.viewport.ymin, in.viewport.ymax);
+        if (trial % 5 == 2) std::swap(in.viewport.xmin, in.viewport.xmax);
+        if (trial % 3 == 1 || trial % 5 == 2) in.form = WindowViewport::Form::Corners;
         const int n = static_cast<int>(rng.integer(0, 6));
         for (int k = 0; k < n; ++k)
             in.points.push_back({rng.uniform(-200, 200), rng.uniform(-200, 200)});
@@ -174,9 +214,10 @@ TEST_CASE("window-viewport: 5,000 random maps agree with GLM matrices and the cl
         // Lv/Lw.
         REQUIRE(r.device_from_window == r.device_from_ndc * r.ndc_from_window);
         using ld = long double;
-        const ld sx = ld(lv) / lw, sy = ld(hv) / hw;
-        const ld size = std::fabs(v.xmin) + std::fabs(v.ymin) + (std::fabs(w.xmin) + 1) * sx +
-                        (std::fabs(w.ymin) + 1) * sy;
+        const ld sx = ld(lv) / lw, sy = ld(hv) / hw;  // negative where the viewport flips
+        const ld size = std::fabs(v.xmin) + std::fabs(v.ymin) +
+                        (std::fabs(w.xmin) + 1) * std::fabs(sx) +
+                        (std::fabs(w.ymin) + 1) * std::fabs(sy);
         REQUIRE(close(r.device_from_window[0][0], sx, size));
         REQUIRE(close(r.device_from_window[1][1], sy, size));
         REQUIRE(close(r.device_from_window[2][0], v.xmin - w.xmin * sx, size));
@@ -194,8 +235,8 @@ TEST_CASE("window-viewport: 5,000 random maps agree with GLM matrices and the cl
                 2 * (std::fabs(p.x) + std::fabs(w.xmin) + std::fabs(p.y) + std::fabs(w.ymin)) /
                     std::min(lw, hw) +
                 1;
-            const ld device_size = size + (std::fabs(p.x) + std::fabs(w.xmin)) * sx +
-                                   (std::fabs(p.y) + std::fabs(w.ymin)) * sy;
+            const ld device_size = size + (std::fabs(p.x) + std::fabs(w.xmin)) * std::fabs(sx) +
+                                   (std::fabs(p.y) + std::fabs(w.ymin)) * std::fabs(sy);
             CAPTURE(k, p.x, p.y);
             REQUIRE(close(r.ndc[k].x, nx, ndc_size));
             REQUIRE(close(r.ndc[k].y, ny, ndc_size));
@@ -251,7 +292,16 @@ TEST_CASE("window-viewport: bad input names the field", "[viewing][window-viewpo
                       "(xmin = xmax = 3)");
     CHECK_THROWS_WITH(WindowViewport::start({{0, 0, 8, 4}, {0, 480, 640, 0}, {}}),
                       "viewport.ymax: must be greater than viewport.ymin (0 < 480): the rectangle "
-                      "is inverted");
+                      "is inverted; for a device whose y runs downward add \"y_down\": true, or "
+                      "give the images of the window's corners as \"corners\": [[x, y], [x, y]]");
+    // Said to be flipped, the same corners are a map (see the exam case); zero size never is.
+    WindowViewport::Input flipped{{0, 0, 8, 4}, {0, 480, 640, 0}, {}};
+    flipped.form = WindowViewport::Form::Corners;
+    CHECK_NOTHROW(WindowViewport::start(flipped));
+    flipped.viewport.ymax = 480;
+    CHECK_THROWS_WITH(WindowViewport::start(flipped),
+                      "viewport.corners[1][1]: must differ from viewport.corners[0][1]: the "
+                      "viewport has zero height (ymin = ymax = 480)");
     CHECK_THROWS_WITH(WindowViewport::start({{0, 0, 8, 4}, {0, 0, 640, 0}, {}}),
                       "viewport.ymax: must be greater than viewport.ymin: the viewport has zero "
                       "height (ymin = ymax = 0)");
