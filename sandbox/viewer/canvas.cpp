@@ -231,6 +231,12 @@ void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_capti
         map.view = s.canvas.view;
         if (hot >= static_cast<int>(scene.handles.size())) hot = -1;
     }
+    if (s.record_widgets)  // where each handle is, for the GUI tests to grab
+        for (const Handle2& h : scene.handles) {
+            const glm::dvec2 at = map.to_screen(h.p);
+            const Box spot{at - glm::dvec2(4), at + glm::dvec2(4)};
+            s.widgets["handle:" + h.name] = {spot, map.canvas, map.canvas.contains(at)};
+        }
 
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(im(map.canvas.min), im(map.canvas.max), true);

@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -86,6 +87,14 @@ GuiHost::GuiHost(const char* title, int width, int height, Mode mode) {
         Uint32 flags = SDL_WINDOW_OPENGL |
                        (mode == Mode::Window ? SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI
                                              : SDL_WINDOW_HIDDEN);
+        // A window never opens bigger than the display's usable area (without task bars): a
+        // 1366×768 or 1280×800 laptop gets a window that fits, not one cut off at the bottom.
+        SDL_Rect usable;
+        if (mode == Mode::Window && SDL_GetDisplayUsableBounds(0, &usable) == 0 && usable.w > 0 &&
+            usable.h > 0) {
+            width = std::min(width, usable.w);
+            height = std::min(height, usable.h);
+        }
         window_ = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width,
                                    height, flags);
         if (!window_) throw NoDisplay(SDL_GetError());

@@ -15,7 +15,9 @@ namespace {
 void draw_picker(Session& s) {
     const char* preview = s.algorithm ? s.algorithm->spec->title.c_str() : "(choose an algorithm)";
     ImGui::SetNextItemWidth(-FLT_MIN);
-    if (ImGui::BeginCombo("##algorithm", preview, ImGuiComboFlags_HeightLarge)) {
+    const bool open = ImGui::BeginCombo("##algorithm", preview, ImGuiComboFlags_HeightLarge);
+    if (!open) s.note_widget("algorithms");  // (open, the last item is in its list)
+    if (open) {
         const std::string* topic = nullptr;
         for (const Algorithm& a : s.registry.all()) {
             if (!topic || *topic != a.spec->topic) {
@@ -27,6 +29,7 @@ void draw_picker(Session& s) {
             if (ImGui::Selectable((a.spec->title + "##" + a.spec->id).c_str(), selected) &&
                 !selected)
                 s.choose(a);
+            s.note_widget("algorithm:" + a.spec->id);
             if (selected) ImGui::SetItemDefaultFocus();
             ImGui::Unindent();
         }
@@ -43,12 +46,15 @@ void draw_algorithm_panel(Session& s) {
     draw_picker(s);
     ImGui::Separator();
     if (ImGui::Button("Example input") && s.algorithm) s.choose(*s.algorithm);
+    s.note_widget("Example input");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Start again from the algorithm's own example");
     ImGui::SameLine();
     if (ImGui::Button("Reset view")) s.canvas.fit_pending = true;
+    s.note_widget("Reset view");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Fit the canvas to the scene");
     if (const Lesson* l = s.algorithm ? s.lessons.for_algorithm(s.algorithm->spec->id) : nullptr) {
         if (ImGui::Button("Read the lesson")) s.open_lesson(*l);
+        s.note_widget("Read the lesson");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", l->title.c_str());
     }
 
@@ -65,7 +71,8 @@ void draw_algorithm_panel(Session& s) {
     // An exam problem's input is the problem: it is shown, not edited.
     ImGui::BeginDisabled(s.exam.active);
     json edited = s.input;
-    if (edit_json_fields(edited)) s.edit(std::move(edited));
+    if (edit_json_fields(edited, [&](const std::string& field) { s.note_widget("field:" + field); }))
+        s.edit(std::move(edited));
     ImGui::EndDisabled();
     ImGui::EndChild();
     ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kHintText));

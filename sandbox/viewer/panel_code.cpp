@@ -31,23 +31,85 @@ bool changed_since(const Var& v, const StepInfo* before) {
 
 }  // namespace
 
+namespace {
+
+// The gutter before each line: the breakpoint dot and the line number.
+float code_gutter() { return 18 + ImGui::CalcTextSize("00").x + 12; }
+
+// One pseudocode line as the rows it takes in `width` pixels: broken at spaces (the course's
+// lines are long), each continuation row indented under the line's own text — never a
+// sideways scroll to read the end of a line. The current font is the monospaced one.
+std::vector<std::string> code_rows(const std::string& line, float width) {
+    const ImFont* font = ImGui::GetFont();
+    const float size = ImGui::GetFontSize();
+    auto measure = [&](const std::string& t) {
+        return font->CalcTextSizeA(size, FLT_MAX, 0, t.c_str()).x;
+    };
+    if (measure(line) <= width) return {line};
+    // Words with the spaces before them: a break goes before a word and drops its spaces.
+    const std::size_t start = std::min(line.find_first_not_of(' '), line.size());
+    const std::string indent(start + 4, ' ');
+    std::vector<std::string> rows;
+    std::string row = line.substr(0, start);
+    bool row_has_word = false;
+    for (std::size_t at = start; at < line.size();) {
+        const std::size_t word = std::min(line.find_first_not_of(' ', at), line.size());
+        const std::size_t end = std::min(line.find(' ', word), line.size());
+        const std::string spaces = line.substr(at, word - at), text = line.substr(word, end - word);
+        if (row_has_word && measure(row + spaces + text) > width) {
+            rows.push_back(row);
+            row = indent + text;
+        } else {
+            row += spaces + text;
+        }
+        row_has_word = true;
+        at = end;
+    }
+    rows.push_back(row);
+    return rows;
+}
+
+// The width the lines wrap to in a panel `panel_width` wide (room kept for a scrollbar).
+float code_text_width(float panel_width) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return panel_width - 2 * style.WindowPadding.x - style.ScrollbarSize - code_gutter() - 8;
+}
+
+}  // namespace
+
+float pseudocode_height(Session& s, float panel_width) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float height = ImGui::GetFrameHeight() + 2 * style.WindowPadding.y;  // title bar, padding
+    if (!s.algorithm) return height;
+    ImGui::PushFont(s.fonts.mono);
+    const float width = code_text_width(panel_width);
+    std::size_t rows = 0;
+    for (const std::string& line : s.algorithm->spec->pseudocode)
+        rows += code_rows(line, width).size();
+    height += ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(rows);
+    ImGui::PopFont();
+    return height;
+}
+
 void draw_pseudocode_panel(Session& s) {
     if (!s.algorithm) return;
     const std::vector<std::string>& lines = s.algorithm->spec->pseudocode;
     const int active = s.last_step() ? s.last_step()->line : 0;
 
     ImGui::PushFont(s.fonts.mono);
-    const float height = ImGui::GetTextLineHeightWithSpacing();
+    const float row_height = ImGui::GetTextLineHeightWithSpacing();
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0, 0));  // one band per line, no gaps
-    const float gutter = 18 + ImGui::CalcTextSize("00").x + 12;    // breakpoint dot, number
-    float width = ImGui::GetContentRegionAvail().x;
-    for (const std::string& line : lines)
-        width = std::max(width, gutter + ImGui::CalcTextSize(line.c_str()).x + 8);
+    const float gutter = code_gutter();
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float text_width = code_text_width(ImGui::GetWindowWidth());
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    const float text_dy = (height - ImGui::GetFontSize()) / 2;
+    const float text_dy = (row_height - ImGui::GetFontSize()) / 2;
+    ImVec2 text_lo(FLT_MAX, FLT_MAX), text_hi(-FLT_MAX, -FLT_MAX);  // where the text went
 
     for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
         const int line = i + 1;
+        const std::vector<std::string> rows = code_rows(lines[i], text_width);
+        const float height = row_height * static_cast<float>(rows.size());
         ImGui::PushID(line);
         const ImVec2 p = ImGui::GetCursorScreenPos();
         const ImVec2 end(p.x + width, p.y + height);
@@ -63,7 +125,7 @@ void draw_pseudocode_panel(Session& s) {
         } else if (hovered) {
             dl->AddRectFilled(p, end, IM_COL32(0, 0, 0, 14));
         }
-        const ImVec2 dot(p.x + 11, p.y + height / 2);
+        const ImVec2 dot(p.x + 11, p.y + row_height / 2);
         if (s.breakpoints.count(line))
             dl->AddCircleFilled(dot, 5, im_colour(kBreakpoint));
         else if (hovered)
@@ -71,8 +133,21 @@ void draw_pseudocode_panel(Session& s) {
         char number[16];
         std::snprintf(number, sizeof number, "%2d", line);
         dl->AddText(ImVec2(p.x + 18, p.y + text_dy), im_colour(kTickLabel), number);
-        dl->AddText(ImVec2(p.x + gutter, p.y + text_dy), im_colour(kCaptionText), lines[i].c_str());
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            const ImVec2 at(p.x + gutter, p.y + text_dy + row_height * static_cast<float>(r));
+            dl->AddText(at, im_colour(kCaptionText), rows[r].c_str());
+            const ImVec2 size = ImGui::CalcTextSize(rows[r].c_str());
+            text_lo = ImVec2(std::min(text_lo.x, at.x), std::min(text_lo.y, at.y));
+            text_hi = ImVec2(std::max(text_hi.x, at.x + size.x), std::max(text_hi.y, at.y + size.y));
+        }
         ImGui::PopID();
+    }
+    if (s.record_widgets && !lines.empty()) {  // the tests check no row runs past the edge
+        const ImVec2 lo = ImGui::GetWindowPos();
+        const float right = lo.x + ImGui::GetWindowWidth() - ImGui::GetStyle().WindowPadding.x;
+        s.widgets["pseudocode text"] = {Box{{text_lo.x, text_lo.y}, {text_hi.x, text_hi.y}},
+                                        Box{{lo.x, lo.y}, {right, lo.y + ImGui::GetWindowHeight()}},
+                                        text_hi.x <= right};
     }
     s.followed_line = active;
     ImGui::PopStyleVar();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "viewer/flow.hpp"
@@ -29,27 +30,39 @@ void draw_stepping(Session& s) {
     const bool compact = ImGui::GetContentRegionAvail().x < 800;
     ImGui::BeginDisabled(s.solution_hidden());  // an exam's steps are its solution
     if (ImGui::Button(compact ? "|<" : "|< Reset")) s.reset();
+    s.note_widget("Reset");
     tooltip("Back to step 0  (Home)");
     ImGui::SameLine();
     if (ImGui::Button(compact ? "<" : "< Back")) s.step_back();
+    s.note_widget("Back");
     tooltip("One step back  (←)");
     ImGui::SameLine();
     if (ImGui::Button("Step >")) s.step_forward();
+    s.note_widget("Step");
     tooltip("One step  (→ or Space)");
     ImGui::SameLine();
     if (ImGui::Button(compact ? ">|" : "Run to end >|")) s.run_to_end();
+    s.note_widget("Run to end");
     tooltip("All remaining steps at once, stopping at a breakpoint  (End)");
     ImGui::SameLine();
     if (ImGui::Button(s.playing ? "Pause##play" : "Play##play",
                       ImVec2(ImGui::GetFontSize() * 4, 0)))
         s.toggle_play();
+    s.note_widget("Play");
     tooltip("Step on by itself, stopping at a breakpoint  (P)");
-    const float speed = ImGui::GetFontSize() * (compact ? 7 : 9);
-    flow(speed);
+    // The sliders' numbers go beside them, not on them, where the grab would cover them.
+    char rate[32];
+    std::snprintf(rate, sizeof rate, "%.1f steps/s", s.steps_per_second);
+    const float speed = ImGui::GetFontSize() * (compact ? 4 : 6);
+    flow(speed + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("60.0 steps/s").x);
     ImGui::SetNextItemWidth(speed);
-    ImGui::SliderFloat("##speed", &s.steps_per_second, 0.5f, 60.0f, "%.1f steps/s",
+    ImGui::SliderFloat("##speed", &s.steps_per_second, 0.5f, 60.0f, "",
                        ImGuiSliderFlags_Logarithmic);
+    s.note_widget("speed");
     tooltip("Play's speed");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(rate);
 
     const std::optional<std::size_t> n = s.length();
     // An exam's length would give its answer away (a short run was rejected early).
@@ -65,8 +78,12 @@ void draw_stepping(Session& s) {
     ImU64 last = n && !s.solution_hidden() ? *n : std::max<ImU64>(2 * step, step + 20);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-FLT_MIN);
-    if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &step, &first, &last, "go to step %llu"))
+    if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &step, &first, &last, ""))
         s.jump(step);
+    s.note_widget("scrub");
+    if (ImGui::IsItemHovered() || ImGui::IsItemActive())
+        ImGui::SetTooltip("Drag to go to any step (now %llu)",
+                          static_cast<unsigned long long>(step));
     ImGui::EndDisabled();
 }
 

@@ -54,11 +54,13 @@ void draw_seed_row(Session& s, const Algorithm& a) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5);
     ImU64 seed = s.exam.seed;
     if (ImGui::InputScalar("##seed", ImGuiDataType_U64, &seed)) s.exam.seed = seed;
+    s.note_widget("exam seed");
     tooltip("The problem's seed: the same number always gives the same problem");
     if (ImGui::IsItemDeactivatedAfterEdit()) s.try_start_exam(a, s.exam.seed);
     if (!s.exam.active) {
         ImGui::SameLine();
         if (ImGui::Button("Start")) s.try_start_exam(a, s.exam.seed);
+        s.note_widget("Start exam");
         return;
     }
     flow(button_width("New problem") + button_width("Leave") + ImGui::GetStyle().ItemSpacing.x);
@@ -66,9 +68,11 @@ void draw_seed_row(Session& s, const Algorithm& a) {
         s.exam.seed = s.exam.problem.seed + 1;
         s.try_start_exam(a, s.exam.seed);
     }
+    s.note_widget("New problem");
     tooltip("The next problem (seed + 1)");
     ImGui::SameLine();
     if (ImGui::Button("Leave")) s.leave_exam();
+    s.note_widget("Leave exam");
     tooltip("Back to free stepping; the problem's input stays loaded");
 }
 
@@ -130,6 +134,7 @@ void draw_answers(Session& s) {
         ImGui::SameLine(label + ImGui::GetStyle().ItemSpacing.x * 2);
         ImGui::SetNextItemWidth(-mark);
         ImGui::InputText("##answer", &s.exam.typed[i]);
+        s.note_widget("answer:" + field);
         enter = enter || (ImGui::IsItemDeactivated() &&
                           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)));
         if (g) {
@@ -158,7 +163,9 @@ void draw_answers(Session& s) {
     ImGui::PushStyleColor(ImGuiCol_ButtonHovered, im_vec4(darker(kCheckButton, 0.9f)));
     ImGui::PushStyleColor(ImGuiCol_ButtonActive, im_vec4(darker(kCheckButton, 0.8f)));
     ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(0xffffffff));
-    if (ImGui::Button("Check") || enter) s.check_exam();
+    const bool check = ImGui::Button("Check");
+    s.note_widget("Check");
+    if (check || enter) s.check_exam();
     ImGui::PopStyleColor(4);
     tooltip("Grade every answer (Enter in a box does the same)");
     ImGui::SameLine();
@@ -180,9 +187,11 @@ void draw_answers(Session& s) {
 void draw_solution(Session& s) {
     if (!s.exam.revealed) {
         if (ImGui::Button("Show solution step by step")) s.reveal_next_step();
+        s.note_widget("Show solution");
         tooltip("Unlocks stepping: each step of the worked solution, with the picture");
     } else if (!s.at_end()) {
         if (ImGui::Button("Next solution step >")) s.step_forward();
+        s.note_widget("Next solution step");
         tooltip("The same as Step > below (→ or Space)");
     } else {
         ImGui::AlignTextToFramePadding();

@@ -66,6 +66,7 @@ void draw_files_row(Session& s) {
     const float path = em * 9;
 
     if (ImGui::Button("Screenshot")) s.screenshot_requested = true;
+    s.note_widget("Screenshot");
     tooltip("Save the whole window as cgsandbox-<id>-step<k>.png here");
 
     flow(ImGui::CalcTextSize("Checkpoint").x + path + button_width("Save") + button_width("Open") +
@@ -76,11 +77,14 @@ void draw_files_row(Session& s) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(path);
     ImGui::InputText("##checkpoint", &s.checkpoint_path);
+    s.note_widget("checkpoint path");
     tooltip("A checkpoint file: algorithm, input, step, view, and the open lesson or exam");
     ImGui::SameLine();
     if (ImGui::Button("Save")) save_checkpoint(s);
+    s.note_widget("Save");
     ImGui::SameLine();
     if (ImGui::Button("Open")) open_checkpoint(s);
+    s.note_widget("Open");
 
     const char* exp = "Export worked example…";
     // Wide enough for "worked-sutherland-hodgman.md", within reason.
@@ -90,9 +94,11 @@ void draw_files_row(Session& s) {
     flow(export_path + button_width(exp) + gap, em * 1.5f);
     ImGui::SetNextItemWidth(export_path);
     ImGui::InputText("##export", &s.export_path);
+    s.note_widget("export path");
     tooltip("Where to write the worked example: Markdown, or JSON if the name ends in .json");
     ImGui::SameLine();
     if (ImGui::Button(exp)) export_worked_example(s);
+    s.note_widget("Export");
     tooltip(
         "The current run written out: question, input, pseudocode, every step with its "
         "formula, and the answer (as `cgsandbox worked` writes it)");

@@ -83,6 +83,7 @@ void browser_entry(Session& s, const Lesson& l) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::PushID(l.file.c_str());
     if (ImGui::Selectable("##lesson", s.lesson() == &l, 0, ImVec2(0, size.y))) s.open_lesson(l);
+    s.note_widget("lesson:" + l.id);
     weight_tooltip(l);
     ImGui::PopID();
     ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -133,11 +134,14 @@ void draw_preset_picker(Session& s, const Lesson& l) {
     const char* preview = current         ? current->name.c_str()
                           : s.exam.active ? "(the exam problem)"
                                           : "(your own input)";
-    if (ImGui::BeginCombo("##preset", preview, ImGuiComboFlags_HeightLarge)) {
+    const bool open = ImGui::BeginCombo("##preset", preview, ImGuiComboFlags_HeightLarge);
+    if (!open) s.note_widget("presets");  // (open, the last item is in its list)
+    if (open) {
         for (const LessonPreset& p : l.presets) {
             const bool selected = &p == current;
             // Choosing the current one again restarts it, which is what a student expects.
             if (ImGui::Selectable(p.name.c_str(), selected)) s.load_preset(p);
+            s.note_widget("preset:" + p.name);
             if (selected) ImGui::SetItemDefaultFocus();
         }
         ImGui::EndCombo();
@@ -148,6 +152,7 @@ void draw_preset_picker(Session& s, const Lesson& l) {
 
 void draw_lesson(Session& s, const Lesson& l) {
     if (ImGui::SmallButton("← All lessons")) s.browsing = true;
+    s.note_widget("All lessons");
     const ImVec2 badge = badge_size(s.fonts, l.exam_weight);
     ImGui::SameLine(ImGui::GetContentRegionMax().x - badge.x);
     draw_badge(s.fonts, ImGui::GetCursorScreenPos(), l.exam_weight);

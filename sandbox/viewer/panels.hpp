@@ -18,6 +18,8 @@ void draw_costs_panel(Session& s);
 // Right: pseudocode with the active line and breakpoints, the variables, the event legend
 // (panel_code.cpp).
 void draw_pseudocode_panel(Session& s);
+// The height the pseudocode panel needs when `panel_width` wide, its long lines wrapped.
+float pseudocode_height(Session& s, float panel_width);
 void draw_variables_panel(Session& s);
 void draw_events_panel(Session& s);
 

@@ -1,5 +1,8 @@
 #include "viewer/session.hpp"
 
+#include <imgui.h>
+#include <imgui_internal.h>
+
 #include <algorithm>
 #include <chrono>
 
@@ -231,6 +234,17 @@ void Session::advance(double seconds) {
 void Session::set_status(std::string text, bool error) {
     status = std::move(text);
     status_is_error = error;
+}
+
+void Session::note_widget(const std::string& name) {
+    if (!record_widgets) return;
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    const ImRect clip = ImGui::GetCurrentWindow()->InnerClipRect;  // what of the window shows
+    const Box box{{lo.x, lo.y}, {hi.x, hi.y}}, window{{clip.Min.x, clip.Min.y}, {clip.Max.x, clip.Max.y}};
+    // In sight: all of its height, and its middle, inside the window's visible part.
+    const bool visible = ImGui::IsItemVisible() && window.contains((box.min + box.max) / 2.0) &&
+                         box.min.y >= window.min.y - 1 && box.max.y <= window.max.y + 1;
+    widgets[name] = Widget{box, window, visible};
 }
 
 }  // namespace cg::viewer

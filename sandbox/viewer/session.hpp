@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -25,6 +26,7 @@
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
 #include "viewer/fonts.hpp"
+#include "viewer/geometry.hpp"
 #include "viewer/view3.hpp"
 
 namespace cg::viewer {
@@ -91,8 +93,8 @@ struct Session {
     bool browsing = false;  // the Lessons tab lists the lessons although one is open
     ExamState exam;
     std::vector<hsr::ComplexityRow> hsr_costs;  // the costs plot's table, made when first opened
-    Tab tab = Tab::Algorithm;
-    bool tab_requested = false;  // select `tab` in the tab bar on the next frame
+    Tab tab = Tab::Algorithm;    // the tab shown (what the tab bar shows, or is about to)
+    bool tab_requested = false;  // `tab` is to be selected in the tab bar when next drawn
 
     // --- panels ---
     std::string checkpoint_path = "checkpoint.json";
@@ -103,6 +105,23 @@ struct Session {
     bool screenshot_requested = false;  // taken by the main loop after the frame is drawn
     int followed_line = 0;              // the pseudocode line last scrolled into view
     std::string followed_event;         // ... and the event in the legend
+
+    // --- the keyboard ---
+    bool show_help = false;    // the list of keys (F1 or ?)
+    int panel_step = 0;        // Tab (+1) or Shift-Tab (−1): focus the next or previous panel
+    bool leave_panels = false;  // Escape: give the keys back to stepping
+    std::string focused_panel;  // the panel with the keyboard focus, "" if none
+
+    // Where the controls were drawn in the last frame, by name ("Step", "tab:Exam"), so the
+    // GUI tests can click them as a person would (record_widgets turns it on).
+    struct Widget {
+        Box box;          // where it is on screen (scrolled out of sight, maybe)
+        Box window;       // the visible part of the window that holds it
+        bool visible = true;  // not scrolled out of sight, not clipped
+    };
+    bool record_widgets = false;
+    std::map<std::string, Widget> widgets;
+    void note_widget(const std::string& name);  // the last ImGui item, when recording
 
     // --- starting runs ---
     // Starts `a` on `in` and moves to `step` (clamped to the end). Throws InputError and

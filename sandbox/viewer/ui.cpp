@@ -1,7 +1,11 @@
 #include "viewer/ui.hpp"
 
+#include <imgui_internal.h>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <string>
 
 #include "viewer/canvas.hpp"
 #include "viewer/panels.hpp"
@@ -21,11 +25,14 @@ struct Layout {
     ImVec2 code_pos, code_size, vars_pos, vars_size, events_pos, events_size;
 };
 
-// `code` is the height the pseudocode needs; the variables and events share what is left.
-Layout compute_layout(ImVec2 d, float code, bool reading) {
+// `code_height(width)` is the height the pseudocode needs in a column that wide; the variables
+// and events share what is left.
+template <class CodeHeight>
+Layout compute_layout(ImVec2 d, CodeHeight code_height, bool reading) {
     const float left =
         reading ? std::clamp(d.x * 0.27f, 250.0f, 460.0f) : std::clamp(d.x * 0.21f, 200.0f, 360.0f);
     const float right = std::clamp(d.x * 0.27f, 230.0f, 460.0f);
+    float code = code_height(right);
     // Taller while reading: the narration, its formula and the lesson's note share it.
     const float bottom = std::clamp(d.y * (reading ? 0.33f : 0.30f), 240.0f, 330.0f);
     const float top = std::max(d.y - bottom, 100.0f);
@@ -52,22 +59,104 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
                                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                     ImGuiWindowFlags_NoBringToFrontOnFocus;
 
+// The panels Tab and Shift-Tab move the keyboard through, in order: those with controls.
+constexpr const char* kKeyboardPanels[] = {"Study", "Step", "Pseudocode"};
+
 template <class Draw>
-void panel(const char* title, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra, Draw draw) {
+void panel(Session& s, const char* title, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra,
+           Draw draw) {
     ImGui::SetNextWindowPos(pos);
     ImGui::SetNextWindowSize(size);
     if (ImGui::Begin(title, nullptr, kFixed | extra)) draw();
+    if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows)) {
+        s.focused_panel = title;
+        // Where the keys go, while they move through the controls: a ring round the panel.
+        if (ImGui::GetIO().NavVisible)
+            ImGui::GetForegroundDrawList()->AddRect(
+                pos, ImVec2(pos.x + size.x, pos.y + size.y),
+                ImGui::GetColorU32(ImGuiCol_NavHighlight), 0, 0, 3.0f);
+    }
     ImGui::End();  // always, whatever Begin returned
 }
 
-// A tab that can also be selected from code (opening a lesson shows the Lessons tab). The
-// request stays until the tab bar has actually switched, which takes it a frame.
+// Tab / Shift-Tab: the next or previous panel gets the keyboard, its first control the
+// navigation cursor (then the arrows move between controls and Space presses one); Escape
+// gives the keys back to stepping.
+void move_keyboard(Session& s) {
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (s.leave_panels) {
+        s.leave_panels = false;
+        ImGui::FocusWindow(nullptr);
+        g.NavDisableHighlight = true;
+    }
+    if (s.panel_step == 0) return;
+    const int n = static_cast<int>(std::size(kKeyboardPanels));
+    int current = -1;
+    for (int i = 0; i < n; ++i)
+        if (s.focused_panel == kKeyboardPanels[i]) current = i;
+    const int next = current < 0 ? (s.panel_step > 0 ? 0 : n - 1) : (current + s.panel_step + n) % n;
+    s.panel_step = 0;
+    if (ImGuiWindow* w = ImGui::FindWindowByName(kKeyboardPanels[next])) {
+        ImGui::FocusWindow(w);
+        ImGui::NavInitWindow(w, true);
+        g.NavDisableHighlight = false;
+        g.NavDisableMouseHover = true;
+    }
+}
+
+// F1 or ?: every key the viewer knows, over the middle of the window.
+void draw_help(Session& s, ImVec2 display) {
+    if (!s.show_help) return;
+    ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowFocus();
+    constexpr const char* keys[][2] = {
+        {"→  or  Space", "one step"},
+        {"←", "one step back"},
+        {"Home", "back to step 0"},
+        {"End", "run to the end (stops at a breakpoint)"},
+        {"P", "play / pause"},
+        {"Tab  /  Shift-Tab", "move the keyboard to the next / previous panel"},
+        {"↑ ↓ ← →  (in a panel)", "move between its controls"},
+        {"Space  or  Enter", "press the control, or edit the field"},
+        {"Escape", "leave the panel (the arrows step again), or close this"},
+        {"Ctrl-Tab", "switch panels, as ImGui does"},
+        {"F1  or  ?", "show or hide this list"},
+    };
+    if (ImGui::Begin("Keyboard", &s.show_help,
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                         ImGuiWindowFlags_NoSavedSettings)) {
+        if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            for (const auto& k : keys) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::PushFont(s.fonts.mono);
+                ImGui::TextUnformatted(k[0]);
+                ImGui::PopFont();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(k[1]);
+            }
+            ImGui::EndTable();
+        }
+        ImGui::TextDisabled("Typing in a field: the keys edit it; Enter or a click elsewhere ends.");
+    }
+    ImGui::End();
+}
+
+// A tab that can also be selected from code (opening a lesson shows the Lessons tab). ImGui
+// applies ImGuiTabItemFlags_SetSelected at the next frame's layout, so in the frame a request
+// is passed the bar still shows the old tab: that frame must not be read back as the
+// student's choice. In every other frame the tab the bar shows is the truth, whoever chose
+// it — a click included. (The request used to stay pending until its tab came up, and a
+// click landing before then was undone by it: the first click on Exam was lost.)
 template <class Draw>
-void tab(Session& s, const char* label, Tab t, Draw draw) {
-    const bool requested = s.tab_requested && s.tab == t;
-    if (!ImGui::BeginTabItem(label, nullptr, requested ? ImGuiTabItemFlags_SetSelected : 0)) return;
-    if (requested) s.tab_requested = false;
-    if (!s.tab_requested) s.tab = t;
+void tab(Session& s, const char* label, Tab t, bool passing_request, Draw draw) {
+    const ImGuiTabItemFlags flags =
+        passing_request && s.tab == t ? ImGuiTabItemFlags_SetSelected : 0;
+    const bool open = ImGui::BeginTabItem(label, nullptr, flags);
+    s.note_widget(std::string("tab:") + label);
+    if (!open) return;
+    if (!passing_request) s.tab = t;
     ImGui::BeginChild("tab");  // scrolls below the tab bar, which stays put
     draw();
     ImGui::EndChild();
@@ -75,17 +164,19 @@ void tab(Session& s, const char* label, Tab t, Draw draw) {
 }
 
 void draw_left_panel(Session& s) {
-    if (!ImGui::BeginTabBar("left")) return;
-    tab(s, "Algorithm", Tab::Algorithm, [&] { draw_algorithm_panel(s); });
-    tab(s, "Lessons", Tab::Lessons, [&] { draw_lessons_panel(s); });
-    tab(s, "Exam", Tab::Exam, [&] { draw_exam_panel(s); });
+    if (!ImGui::BeginTabBar("left")) return;  // not drawn: a request waits for the next frame
+    const bool passing_request = s.tab_requested;
+    s.tab_requested = false;
+    tab(s, "Algorithm", Tab::Algorithm, passing_request, [&] { draw_algorithm_panel(s); });
+    tab(s, "Lessons", Tab::Lessons, passing_request, [&] { draw_lessons_panel(s); });
+    tab(s, "Exam", Tab::Exam, passing_request, [&] { draw_exam_panel(s); });
     ImGui::EndTabBar();
 }
 
 void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
-    panel("Canvas", pos, size,
+    panel(s, "Canvas", pos, size,
           ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
               ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground,
           [&] { draw_canvas(s, interactive); });
@@ -95,26 +186,24 @@ void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
 }  // namespace
 
 void draw_ui(Session& s, ImVec2 display, bool full_ui, bool interactive) {
+    if (s.record_widgets) s.widgets.clear();  // what this frame draws, no older
     if (!full_ui) {
         canvas_window(s, ImVec2(0, 0), display, interactive);
         return;
     }
-    float code = ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y +
-                 ImGui::GetStyle().ScrollbarSize;  // title bar, padding, horizontal scrollbar
-    ImGui::PushFont(s.fonts.mono);
-    if (s.algorithm)
-        code += ImGui::GetTextLineHeightWithSpacing() * s.algorithm->spec->pseudocode.size();
-    ImGui::PopFont();
-    const Layout l = compute_layout(display, code, s.tab != Tab::Algorithm);
-    panel("Study", l.left_pos, l.left_size, ImGuiWindowFlags_NoTitleBar,
+    const Layout l = compute_layout(
+        display, [&](float width) { return pseudocode_height(s, width); }, s.tab != Tab::Algorithm);
+    if (interactive) move_keyboard(s);
+    s.focused_panel.clear();
+    panel(s, "Study", l.left_pos, l.left_size, ImGuiWindowFlags_NoTitleBar,
           [&] { draw_left_panel(s); });
     canvas_window(s, l.canvas_pos, l.canvas_size, interactive);
-    panel("Step", l.bottom_pos, l.bottom_size, ImGuiWindowFlags_NoScrollbar,
+    panel(s, "Step", l.bottom_pos, l.bottom_size, ImGuiWindowFlags_NoScrollbar,
           [&] { draw_controls_panel(s); });
-    panel("Pseudocode", l.code_pos, l.code_size, ImGuiWindowFlags_HorizontalScrollbar,
-          [&] { draw_pseudocode_panel(s); });
-    panel("Variables", l.vars_pos, l.vars_size, 0, [&] { draw_variables_panel(s); });
-    panel("Events", l.events_pos, l.events_size, 0, [&] { draw_events_panel(s); });
+    panel(s, "Pseudocode", l.code_pos, l.code_size, 0, [&] { draw_pseudocode_panel(s); });
+    panel(s, "Variables", l.vars_pos, l.vars_size, 0, [&] { draw_variables_panel(s); });
+    panel(s, "Events", l.events_pos, l.events_size, 0, [&] { draw_events_panel(s); });
+    draw_help(s, display);
 }
 
 }  // namespace cg::viewer
