@@ -26,6 +26,7 @@ Gl Gl::load() {
     lookup(gl.ReadBuffer, "glReadBuffer");
     lookup(gl.ReadPixels, "glReadPixels");
     lookup(gl.PixelStorei, "glPixelStorei");
+    lookup(gl.Finish, "glFinish");
     lookup(gl.GenFramebuffers, "glGenFramebuffers");
     lookup(gl.DeleteFramebuffers, "glDeleteFramebuffers");
     lookup(gl.BindFramebuffer, "glBindFramebuffer");

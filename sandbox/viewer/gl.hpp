@@ -21,6 +21,7 @@ struct Gl {
     decltype(&::glReadBuffer) ReadBuffer = nullptr;
     decltype(&::glReadPixels) ReadPixels = nullptr;
     decltype(&::glPixelStorei) PixelStorei = nullptr;
+    decltype(&::glFinish) Finish = nullptr;
     PFNGLGENFRAMEBUFFERSPROC GenFramebuffers = nullptr;
     PFNGLDELETEFRAMEBUFFERSPROC DeleteFramebuffers = nullptr;
     PFNGLBINDFRAMEBUFFERPROC BindFramebuffer = nullptr;
