@@ -10,7 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libbenchmark-dev libpolyclipping-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   clang libclang-rt-14-dev
-  optipng
+  optipng pngquant
 )
 
 missing=()
