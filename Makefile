@@ -4,8 +4,9 @@
 #               then build the sanitizer configuration and run the whole suite again under
 #               AddressSanitizer + UBSan, with a 30-second run of each fuzz target
 # and a few more: make build, make test-normal, make test-sanitize, make bench, make fuzz,
-# make clean.
-.PHONY: all deps configure build build-sanitize run test test-normal test-sanitize bench fuzz clean
+# make screenshots, make clean.
+.PHONY: all deps configure build build-sanitize run test test-normal test-sanitize bench fuzz \
+	screenshots clean
 
 FUZZ_SECONDS ?= 300
 
@@ -45,6 +46,10 @@ bench: deps
 # Each fuzz target for FUZZ_SECONDS (default 300), growing build-sanitize/fuzz/corpus/.
 fuzz: build-sanitize
 	@scripts/fuzz.sh $(FUZZ_SECONDS)
+
+# The README's pictures (docs/images/*.png), drawn by the built viewer: scripts/screenshots.sh.
+screenshots: build
+	@scripts/screenshots.sh build/bin/cgsandbox docs/images
 
 clean:
 	rm -rf build build-sanitize build-bench

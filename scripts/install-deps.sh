@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libbenchmark-dev libpolyclipping-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core xdotool libx11-dev
   clang libclang-rt-14-dev
+  optipng pngquant
 )
 
 missing=()
