@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "viewer/grid_texture.hpp"
 #include "viewer/host.hpp"
 #include "viewer/palette.hpp"
 #include "viewer/session.hpp"
@@ -123,11 +124,16 @@ Viewer::Viewer(const Registry& registry, const std::optional<Checkpoint>& initia
     host_ = std::make_unique<GuiHost>("CG Sandbox", kMaxWidth, kMaxHeight, GuiHost::Mode::Window);
     fit_frame_to_display(host_->window());
     s.fonts = host_->fonts();
+    textures_ = std::make_unique<GridTextures>(host_->gl());
+    s.textures = textures_.get();
     ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
     last_ = SDL_GetPerformanceCounter();
 }
 
-Viewer::~Viewer() = default;
+Viewer::~Viewer() {
+    session_->textures = nullptr;
+    textures_.reset();  // while the GL context is still there
+}
 
 SDL_Window* Viewer::window() const { return host_->window(); }
 

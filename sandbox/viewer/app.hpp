@@ -15,6 +15,7 @@
 
 namespace cg::viewer {
 
+class GridTextures;
 class GuiHost;
 struct Session;
 
@@ -53,6 +54,7 @@ class Viewer {
 
     std::unique_ptr<Session> session_;
     std::unique_ptr<GuiHost> host_;
+    std::unique_ptr<GridTextures> textures_;  // before host_ goes: it needs the GL context
     EventFeed feed_;
     int busy_frames_ = 3;  // redraw a few frames after any event, so hover effects settle
     std::uint64_t last_ = 0;

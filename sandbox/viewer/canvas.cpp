@@ -222,17 +222,17 @@ namespace {
 
 // The 2D canvas in `box`; returns the caption's box so the 3D canvas can keep clear of it.
 void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_caption) {
-    Scene scene = s.scene();
+    const Scene* scene = &s.scene();
     ScreenMap map{box, s.canvas.view};
     int hot = -1;
     if (interactive) {
-        hot = interact(s, scene, map);
-        scene = s.scene();  // a dragged handle may have restarted the run
+        hot = interact(s, *scene, map);
+        scene = &s.scene();  // a dragged handle may have restarted the run
         map.view = s.canvas.view;
-        if (hot >= static_cast<int>(scene.handles.size())) hot = -1;
+        if (hot >= static_cast<int>(scene->handles.size())) hot = -1;
     }
     if (s.record_widgets)  // where each handle is, for the GUI tests to grab
-        for (const Handle2& h : scene.handles) {
+        for (const Handle2& h : scene->handles) {
             const glm::dvec2 at = map.to_screen(h.p);
             const Box spot{at - glm::dvec2(4), at + glm::dvec2(4)};
             s.widgets["handle:" + h.name] = {spot, map.canvas, map.canvas.contains(at)};
@@ -244,7 +244,7 @@ void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_capti
     draw_grid(dl, map, s.fonts);
     Caption caption;
     if (with_caption) caption = make_caption(map, s, interactive);
-    draw_scene(dl, map, scene, s.fonts, hot, {caption.box.grown(4)});
+    draw_scene(dl, map, *scene, s.fonts, hot, {caption.box.grown(4)}, s.textures);
     if (with_caption) draw_caption(dl, caption, s.fonts);
     dl->PopClipRect();
 }
@@ -252,7 +252,7 @@ void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_capti
 void draw_canvas3d(Session& s, const Box& box, bool interactive) {
     Camera3& camera = s.canvas.camera3;
     if (interactive && interact3(camera, box)) camera.view = fit_view3(s.scene(), box.max - box.min);
-    const Scene scene = s.scene();
+    const Scene& scene = s.scene();
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(im(box.min), im(box.max), true);
     dl->AddRectFilled(im(box.min), im(box.max), im_colour(kCanvasBackground));
@@ -310,7 +310,7 @@ void draw_sliders(Session& s, const Box& area) {
 void draw_canvas(Session& s, bool interactive) {
     const glm::dvec2 origin = dv(ImGui::GetCursorScreenPos());
     const glm::dvec2 size = glm::max(dv(ImGui::GetContentRegionAvail()), glm::dvec2(1, 1));
-    const Scene scene = s.scene();
+    const Scene& scene = s.scene();
     // A scene with 3D content gets the 3D canvas; with 2D content as well (a plot, the
     // viewport's disc), the two side by side: 3D on the left, 2D on the right.
     const bool three = scene.has_3d(), two = !three || scene.has_2d();

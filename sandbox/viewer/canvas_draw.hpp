@@ -53,8 +53,11 @@ void draw_grid(ImDrawList* dl, const ScreenMap& map, const Fonts& fonts);
 
 // The scene, bottom to top: half-planes, polygons, segments, points, handles, then all
 // labels, placed to avoid each other, the geometry and the `keep_clear` boxes (the caption).
-// `hot_handle` is the handle hovered or dragged, or -1.
+// `hot_handle` is the handle hovered or dragged, or -1. `textures`, if given, draws big pixel
+// grids as textures (viewer/grid_texture.hpp).
+class GridTextures;
 void draw_scene(ImDrawList* dl, const ScreenMap& map, const Scene& scene, const Fonts& fonts,
-                int hot_handle, const std::vector<Box>& keep_clear);
+                int hot_handle, const std::vector<Box>& keep_clear,
+                GridTextures* textures = nullptr);
 
 }  // namespace cg::viewer

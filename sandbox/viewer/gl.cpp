@@ -27,6 +27,11 @@ Gl Gl::load() {
     lookup(gl.ReadPixels, "glReadPixels");
     lookup(gl.PixelStorei, "glPixelStorei");
     lookup(gl.Finish, "glFinish");
+    lookup(gl.GenTextures, "glGenTextures");
+    lookup(gl.DeleteTextures, "glDeleteTextures");
+    lookup(gl.BindTexture, "glBindTexture");
+    lookup(gl.TexParameteri, "glTexParameteri");
+    lookup(gl.TexImage2D, "glTexImage2D");
     lookup(gl.GenFramebuffers, "glGenFramebuffers");
     lookup(gl.DeleteFramebuffers, "glDeleteFramebuffers");
     lookup(gl.BindFramebuffer, "glBindFramebuffer");

@@ -22,6 +22,11 @@ struct Gl {
     decltype(&::glReadPixels) ReadPixels = nullptr;
     decltype(&::glPixelStorei) PixelStorei = nullptr;
     decltype(&::glFinish) Finish = nullptr;
+    decltype(&::glGenTextures) GenTextures = nullptr;
+    decltype(&::glDeleteTextures) DeleteTextures = nullptr;
+    decltype(&::glBindTexture) BindTexture = nullptr;
+    decltype(&::glTexParameteri) TexParameteri = nullptr;
+    decltype(&::glTexImage2D) TexImage2D = nullptr;
     PFNGLGENFRAMEBUFFERSPROC GenFramebuffers = nullptr;
     PFNGLDELETEFRAMEBUFFERSPROC DeleteFramebuffers = nullptr;
     PFNGLBINDFRAMEBUFFERPROC BindFramebuffer = nullptr;

@@ -5,6 +5,7 @@
 #include <cfloat>
 
 #include "viewer/app.hpp"
+#include "viewer/grid_texture.hpp"
 #include "viewer/host.hpp"
 #include "viewer/palette.hpp"
 #include "viewer/session.hpp"
@@ -39,6 +40,8 @@ void render_png(const Registry& registry, const Checkpoint& checkpoint, int widt
     // Drawing into our own framebuffer makes the picture exactly width x height whatever the
     // screen is; ImGui is told the size directly and never sees a mouse.
     OffscreenTarget target(host.gl(), width, height);
+    GridTextures textures(host.gl());
+    s.textures = &textures;
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
     io.DeltaTime = 1.0f / 60.0f;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "viewer/canvas_draw.hpp"
+#include "viewer/grid_texture.hpp"
 #include "viewer/im_colour.hpp"
 #include "viewer/labels.hpp"
 #include "viewer/palette.hpp"
@@ -47,6 +48,8 @@ struct Painter {
     Box safe;
     LabelPlacer placer;
     std::vector<PendingLabel> labels;
+    GridTextures* textures = nullptr;  // big grids as one texture, when there is a GL context
+    std::size_t grids = 0;             // grids drawn so far (each its own texture)
 
     glm::dvec2 text_size(const std::string& text) const {
         const ImVec2 s = fonts.ui->CalcTextSizeA(fonts.ui->FontSize, FLT_MAX, 0, text.c_str());
@@ -130,23 +133,10 @@ constexpr std::uint32_t kFilledCentre = 0x00000080;
 constexpr double kBorderPixels = 6;   // cell size from which borders are drawn
 constexpr double kCentrePixels = 14;  // ... and centre dots
 
-// The visible cells as filled squares (runs of one colour merged into one rectangle; below one
-// screen pixel per cell, blocks of cells drawn as one in the colour of their first filled
-// cell), then, zoomed in, the cell borders and the sample points at the centres.
-void draw_pixel_grid(Painter& p, const PixelGrid2& g) {
-    if (g.width <= 0 || g.height <= 0 ||
-        g.rgba.size() != static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height))
-        return;
-    const Box& c = p.map.canvas;
-    const glm::dvec2 lo = p.map.to_world({c.min.x, c.max.y}) - g.origin;
-    const glm::dvec2 hi = p.map.to_world({c.max.x, c.min.y}) - g.origin;
-    auto cells = [](double v, int n) { return static_cast<int>(std::clamp(v, 0.0, double(n))); };
-    const int i0 = cells(std::floor(lo.x), g.width), i1 = cells(std::ceil(hi.x), g.width);
-    const int j0 = cells(std::floor(lo.y), g.height), j1 = cells(std::ceil(hi.y), g.height);
-    if (i0 >= i1 || j0 >= j1) return;
-
+// Cells [i0, i1) × [j0, j1) as filled rectangles: runs of one colour merged into one; below one
+// screen pixel per cell, blocks of cells drawn as one in the colour of their first filled cell.
+void draw_cell_runs(Painter& p, const PixelGrid2& g, int i0, int i1, int j0, int j1, ImU32 role) {
     const double size = p.map.view.zoom;  // screen pixels per cell
-    const ImU32 role = im_colour(with_alpha(role_rgba(g.role), kRoleCellAlpha));
     auto cell_at = [&](int i, int j) {
         return g.rgba[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.width) + i];
     };
@@ -177,8 +167,46 @@ void draw_pixel_grid(Painter& p, const PixelGrid2& g) {
             if (end) break;
         }
     }
+}
+
+// The visible cells — one texture for a big grid when there is a GL context (a ray-traced
+// image), else filled rectangles — then, zoomed in, the cell borders and the sample points at
+// the centres.
+void draw_pixel_grid(Painter& p, const PixelGrid2& g) {
+    if (g.width <= 0 || g.height <= 0 ||
+        g.rgba.size() != static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height))
+        return;
+    const std::size_t slot = p.grids++;
+    const Box& c = p.map.canvas;
+    const glm::dvec2 lo = p.map.to_world({c.min.x, c.max.y}) - g.origin;
+    const glm::dvec2 hi = p.map.to_world({c.max.x, c.min.y}) - g.origin;
+    auto cells = [](double v, int n) { return static_cast<int>(std::clamp(v, 0.0, double(n))); };
+    const int i0 = cells(std::floor(lo.x), g.width), i1 = cells(std::ceil(hi.x), g.width);
+    const int j0 = cells(std::floor(lo.y), g.height), j1 = cells(std::ceil(hi.y), g.height);
+    if (i0 >= i1 || j0 >= j1) return;
+
+    const double size = p.map.view.zoom;  // screen pixels per cell
+    const ImU32 role = im_colour(with_alpha(role_rgba(g.role), kRoleCellAlpha));
+    if (p.textures && g.rgba.size() >= GridTextures::kMinCells) {
+        // The visible cells as one quad (texture row 0 is the grid's top row).
+        const ImTextureID id = p.textures->texture(slot, g, role);
+        const double w = g.width, h = g.height;
+        p.dl->AddImage(id, im(p.map.to_screen(g.origin + glm::dvec2(i0, j1))),
+                       im(p.map.to_screen(g.origin + glm::dvec2(i1, j0))),
+                       ImVec2(static_cast<float>(i0 / w), static_cast<float>((h - j1) / h)),
+                       ImVec2(static_cast<float>(i1 / w), static_cast<float>((h - j0) / h)));
+    } else {
+        draw_cell_runs(p, g, i0, i1, j0, j1, role);
+    }
     if (!g.grid_lines || size < kBorderPixels) return;
 
+    auto cell_at = [&](int i, int j) {
+        return g.rgba[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.width) + i];
+    };
+    auto corner = [&](double i, double j) {
+        const glm::dvec2 s = p.map.to_screen(g.origin + glm::dvec2(i, j));
+        return glm::clamp(s, p.safe.min, p.safe.max);
+    };
     const ImU32 border = im_colour(kCellBorder);
     for (int i = i0; i <= i1; ++i)
         p.dl->AddLine(im(corner(i, j0)), im(corner(i, j1)), border);
@@ -318,8 +346,8 @@ void draw_labels(Painter& p) {
 // --- [draw_scene] ----------------------------------------------------------------------------
 
 void draw_scene(ImDrawList* dl, const ScreenMap& map, const Scene& scene, const Fonts& fonts,
-                int hot_handle, const std::vector<Box>& keep_clear) {
-    Painter p{dl, map, fonts, map.canvas.grown(kSafeMargin), LabelPlacer(map.canvas), {}};
+                int hot_handle, const std::vector<Box>& keep_clear, GridTextures* textures) {
+    Painter p{dl, map, fonts, map.canvas.grown(kSafeMargin), LabelPlacer(map.canvas), {}, textures};
     for (const Box& b : keep_clear) p.placer.keep_clear(b);
     for (const PixelGrid2& g : scene.grids) draw_pixel_grid(p, g);
     for (const HalfPlane2& h : scene.half_planes) draw_half_plane(p, h);

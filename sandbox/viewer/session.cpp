@@ -149,10 +149,14 @@ std::optional<std::size_t> Session::length() const {
     return probed_length;
 }
 
-Scene Session::scene() const {
-    Scene scene;
-    if (timeline) timeline->current().draw(scene);
-    return scene;
+const Scene& Session::scene() const {
+    if (scene_run_ != run_id || scene_index_ != index() || !timeline) {
+        scene_ = Scene{};
+        if (timeline) timeline->current().draw(scene_);
+        scene_run_ = timeline ? run_id : std::numeric_limits<std::uint64_t>::max();
+        scene_index_ = index();
+    }
+    return scene_;
 }
 
 const NarrationLog& Session::log() {

@@ -63,6 +63,8 @@ struct ExamState {
     bool answers_shown = false;      // the expected values are shown beside the answers
 };
 
+class GridTextures;
+
 struct Session {
     explicit Session(const Registry& r) : registry(r) {}
 
@@ -139,7 +141,8 @@ struct Session {
     std::optional<std::size_t> length() const;
     const StepInfo* last_step() const { return timeline ? timeline->last_step() : nullptr; }
     bool at_end() const { return !timeline || timeline->at_end(); }
-    Scene scene() const;
+    // What the current step draws, made once per step (a frame asks for it several times).
+    const Scene& scene() const;
     const NarrationLog& log();
 
     // --- studying (session_study.cpp) ---
@@ -168,11 +171,16 @@ struct Session {
 
     void set_status(std::string text, bool error);
 
+    GridTextures* textures = nullptr;  // big pixel grids as textures, when drawn with OpenGL
+
   private:
     bool on_breakpoint();  // true (and says so) when the last step's line has a breakpoint
     bool can_step() const { return timeline && !solution_hidden(); }
 
     NarrationLog log_;
+    mutable Scene scene_;  // scene()'s, for the step it was drawn at
+    mutable std::uint64_t scene_run_ = std::numeric_limits<std::uint64_t>::max();
+    mutable std::size_t scene_index_ = 0;
 };
 
 }  // namespace cg::viewer

@@ -21,6 +21,7 @@
 #include "io/lesson.hpp"
 #include "io/registry.hpp"
 #include "viewer/gl.hpp"
+#include "viewer/grid_texture.hpp"
 #include "viewer/host.hpp"
 #include "viewer/session.hpp"
 #include "viewer/ui.hpp"
@@ -36,6 +37,7 @@ struct Env {
     cg::LessonLibrary lessons = cg::load_lessons(cg::default_lessons_dir(), registry);
     cg::viewer::GuiHost host{"frames", kWidth, kHeight, cg::viewer::GuiHost::Mode::Offscreen};
     cg::viewer::OffscreenTarget target{host.gl(), kWidth, kHeight};
+    cg::viewer::GridTextures textures{host.gl()};
 };
 
 Env& env() {
@@ -78,6 +80,7 @@ std::unique_ptr<Session> session_at(const cg::Lesson* l, const cg::Algorithm& a,
     Env& e = env();
     auto s = std::make_unique<Session>(e.registry);
     s->fonts = e.host.fonts();
+    s->textures = &e.textures;
     s->lessons = e.lessons;
     s->start(a, input, step);
     if (l) {
@@ -95,11 +98,19 @@ void time_frames(benchmark::State& state, std::vector<std::unique_ptr<Session>>&
         for (int i = 0; i < 3; ++i) frame_ms(*s);
     std::vector<double> times;
     std::size_t k = 0;
+    double vertices = 0, draws = 0;
     for (auto _ : state) {
         const double ms = frame_ms(*sessions[k++ % sessions.size()]);
         state.SetIterationTime(ms / 1000);
         times.push_back(ms);
+        const ImDrawData* dd = ImGui::GetDrawData();
+        vertices = std::max(vertices, double(dd->TotalVtxCount));
+        int cmds = 0;
+        for (int i = 0; i < dd->CmdListsCount; ++i) cmds += dd->CmdLists[i]->CmdBuffer.Size;
+        draws = std::max(draws, double(cmds));
     }
+    state.counters["max_draw_calls"] = draws;
+    state.counters["max_vertices"] = vertices;
     std::sort(times.begin(), times.end());
     state.counters["median_ms"] = times[times.size() / 2];
     state.counters["worst_ms"] = times.back();
