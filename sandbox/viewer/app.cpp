@@ -204,7 +204,7 @@ void Viewer::draw_frame(double seconds) {
 
     int width = 0, height = 0;
     SDL_GL_GetDrawableSize(host_->window(), &width, &height);
-    host_->gl().clear(width, height, kCanvasBackground);
+    clear_frame(host_->gl(), width, height, s);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (s.screenshot_requested) {
         s.screenshot_requested = false;

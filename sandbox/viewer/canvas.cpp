@@ -240,7 +240,8 @@ void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_capti
 
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(im(map.canvas.min), im(map.canvas.max), true);
-    dl->AddRectFilled(im(map.canvas.min), im(map.canvas.max), im_colour(kCanvasBackground));
+    // No background of its own: the frame is cleared to the canvas's colour (kCanvasBackground)
+    // before ImGui draws, and a software rasteriser pays for every pixel filled twice.
     draw_grid(dl, map, s.fonts);
     Caption caption;
     if (with_caption) caption = make_caption(map, s, interactive);
@@ -255,7 +256,7 @@ void draw_canvas3d(Session& s, const Box& box, bool interactive) {
     const Scene& scene = s.scene();
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(im(box.min), im(box.max), true);
-    dl->AddRectFilled(im(box.min), im(box.max), im_colour(kCanvasBackground));
+    // (The background is the frame's clear colour, as for the 2D canvas.)
     ScreenMap map{box, s.canvas.view};
     Caption caption = make_caption(map, s, false);
     if (interactive)

@@ -27,6 +27,9 @@ Gl Gl::load() {
     lookup(gl.ReadPixels, "glReadPixels");
     lookup(gl.PixelStorei, "glPixelStorei");
     lookup(gl.Finish, "glFinish");
+    lookup(gl.Scissor, "glScissor");
+    lookup(gl.Enable, "glEnable");
+    lookup(gl.Disable, "glDisable");
     lookup(gl.GenTextures, "glGenTextures");
     lookup(gl.DeleteTextures, "glDeleteTextures");
     lookup(gl.BindTexture, "glBindTexture");
@@ -49,6 +52,16 @@ void Gl::clear(int width, int height, std::uint32_t rgba) const {
     Viewport(0, 0, width, height);
     ClearColor(channel(24), channel(16), channel(8), channel(0));
     Clear(GL_COLOR_BUFFER_BIT);
+}
+
+void Gl::clear_rect(int x, int y, int w, int h, int height, std::uint32_t rgba) const {
+    if (w <= 0 || h <= 0) return;
+    auto channel = [&](int shift) { return static_cast<float>((rgba >> shift) & 0xffu) / 255.0f; };
+    Enable(GL_SCISSOR_TEST);
+    Scissor(x, height - y - h, w, h);  // GL counts rows from the bottom
+    ClearColor(channel(24), channel(16), channel(8), channel(0));
+    Clear(GL_COLOR_BUFFER_BIT);
+    Disable(GL_SCISSOR_TEST);
 }
 
 OffscreenTarget::OffscreenTarget(const Gl& gl, int width, int height) : gl_(gl) {

@@ -22,6 +22,9 @@ struct Gl {
     decltype(&::glReadPixels) ReadPixels = nullptr;
     decltype(&::glPixelStorei) PixelStorei = nullptr;
     decltype(&::glFinish) Finish = nullptr;
+    decltype(&::glScissor) Scissor = nullptr;
+    decltype(&::glEnable) Enable = nullptr;
+    decltype(&::glDisable) Disable = nullptr;
     decltype(&::glGenTextures) GenTextures = nullptr;
     decltype(&::glDeleteTextures) DeleteTextures = nullptr;
     decltype(&::glBindTexture) BindTexture = nullptr;
@@ -42,6 +45,9 @@ struct Gl {
 
     // Clears the bound framebuffer's w x h pixels to an 0xRRGGBBAA colour.
     void clear(int width, int height, std::uint32_t rgba) const;
+    // Clears the rectangle [x, x + w) × [y, y + h) of a framebuffer `height` tall, in pixels
+    // from its top-left corner.
+    void clear_rect(int x, int y, int w, int h, int height, std::uint32_t rgba) const;
 };
 
 // An RGBA8 colour buffer to draw into instead of a window, so `render` produces exactly the

@@ -54,7 +54,7 @@ void render_png(const Registry& registry, const Checkpoint& checkpoint, int widt
         draw_ui(s, io.DisplaySize, full_ui, false);
         ImGui::Render();
         target.bind();
-        host.gl().clear(width, height, kCanvasBackground);
+        clear_frame(host.gl(), width, height, s);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
     write_png(out_path, width, height, read_pixels(host.gl(), width, height));

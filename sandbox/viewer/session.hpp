@@ -87,6 +87,7 @@ struct Session {
     double play_clock = 0;  // steps owed to Play; one is taken whenever it reaches 1
 
     CanvasState canvas;
+    Box canvas_rect{{0, 0}, {0, 0}};  // where the last frame put the canvas (display pixels)
 
     // --- studying ---
     LessonLibrary lessons;  // loaded at start-up; broken files are listed in lessons.errors

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "viewer/canvas.hpp"
+#include "viewer/gl.hpp"
+#include "viewer/palette.hpp"
 #include "viewer/panels.hpp"
 
 namespace cg::viewer {
@@ -67,6 +69,7 @@ void panel(Session& s, const char* title, ImVec2 pos, ImVec2 size, ImGuiWindowFl
            Draw draw) {
     ImGui::SetNextWindowPos(pos);
     ImGui::SetNextWindowSize(size);
+    ImGui::SetNextWindowBgAlpha(0.0f);  // the frame is cleared to its colour (clear_frame)
     if (ImGui::Begin(title, nullptr, kFixed | extra)) draw();
     if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows)) {
         s.focused_panel = title;
@@ -174,6 +177,7 @@ void draw_left_panel(Session& s) {
 }
 
 void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
+    s.canvas_rect = Box{{pos.x, pos.y}, {pos.x + size.x, pos.y + size.y}};
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
     panel(s, "Canvas", pos, size,
@@ -204,6 +208,19 @@ void draw_ui(Session& s, ImVec2 display, bool full_ui, bool interactive) {
     panel(s, "Variables", l.vars_pos, l.vars_size, 0, [&] { draw_variables_panel(s); });
     panel(s, "Events", l.events_pos, l.events_size, 0, [&] { draw_events_panel(s); });
     draw_help(s, display);
+}
+
+void clear_frame(const Gl& gl, int fb_width, int fb_height, const Session& s) {
+    const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+    auto byte = [](float c) { return static_cast<std::uint32_t>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255)); };
+    gl.clear(fb_width, fb_height, byte(bg.x) << 24 | byte(bg.y) << 16 | byte(bg.z) << 8 | 0xffu);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const double sx = display.x > 0 ? fb_width / display.x : 1;
+    const double sy = display.y > 0 ? fb_height / display.y : 1;
+    const Box& c = s.canvas_rect;
+    const int x0 = static_cast<int>(std::lround(c.min.x * sx)), y0 = static_cast<int>(std::lround(c.min.y * sy));
+    const int x1 = static_cast<int>(std::lround(c.max.x * sx)), y1 = static_cast<int>(std::lround(c.max.y * sy));
+    gl.clear_rect(x0, y0, x1 - x0, y1 - y0, fb_height, kCanvasBackground);
 }
 
 }  // namespace cg::viewer
