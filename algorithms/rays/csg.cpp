@@ -352,7 +352,7 @@ dvec3 csg_end_normal(const PreparedCsg& p, const CsgEnd& end, dvec3 world_point)
                                                        : dvec3(0, 0, end.face == 1 ? -1 : 1);
         n = unit(leaf.quadric.transformed ? m * leaf.quadric.linear_inv : m);
     }
-    return end.flip ? -n : n;
+    return end.flip ? dvec3(0.0) - n : n;  // 0 − n: no −0 components
 }
 
 void csg_find_hit(const PreparedCsg& p, dvec3 origin, dvec3 direction, double t_min, CsgHit& h) {

@@ -155,24 +155,28 @@ void CsgRay::validate(const Input& in) {
     check_point(in.direction, "direction");
     if (in.direction == dvec3(0.0))
         throw InputError("direction", "must not be the zero vector: a ray needs a direction");
-    // In every leaf's frame the ray's squares must neither overflow nor underflow.
+    // The ray itself must be of a size whose squares neither overflow nor underflow ...
+    const double dw = max_abs(in.direction), ow = max_abs(in.origin);
+    if (!(dw >= 1e-100 && dw <= 1e100))
+        throw InputError("direction", "is too small or too large for double precision (largest "
+                                      "component " + num(dw) + ")");
+    if (!(ow <= 1e100))
+        throw InputError("origin", "is too far away for double precision (" + num(ow) + ")");
+    // ... and so must it be in every leaf's frame: a transform that takes it out of range is
+    // the leaf's fault.
     const PreparedCsg p = prepare_csg(in.tree);
     for (const CsgNode& n : in.tree.nodes) {
         if (!n.leaf) continue;
         const PreparedQuadric& pq = p.leaves[n.leaf_index].quadric;
         const RayQuadratic q = ray_quadratic(pq, in.origin, in.direction);
         const double d = max_abs(q.direction), o = max_abs(q.origin);
-        const std::string where = " in the frame of " + n.path;
-        if (!(d >= 1e-100 && d <= 1e100))
-            throw InputError("direction", "is too small or too large for double precision" +
-                                              where + " (largest component " + num(d) + ")");
-        if (!(o <= 1e100))
-            throw InputError("origin",
-                             "is too far away for double precision" + where + " (" + num(o) + ")");
-        if (n.kind == CsgPrimitive::Quadric &&
-            (!std::isfinite(q.a) || !std::isfinite(q.b) || !std::isfinite(q.c) ||
-             !std::isfinite(q.b * q.b - 4 * q.a * q.c)))
-            throw InputError("origin", "and direction give a quadratic that overflows" + where);
+        if (!(d >= 1e-100 && d <= 1e100) || !(o <= 1e100) ||
+            (n.kind == CsgPrimitive::Quadric &&
+             (!std::isfinite(q.a) || !std::isfinite(q.b) || !std::isfinite(q.c) ||
+              !std::isfinite(q.b * q.b - 4 * q.a * q.c))))
+            throw InputError(n.path, "is placed so that the ray is too large or too small for "
+                                     "double precision in its frame (E_m = " + num(q.origin) +
+                                     ", d_m = " + num(q.direction) + ")");
     }
 }
 
@@ -568,7 +572,7 @@ void CsgRay::draw(const State& s, Scene& scene) {
             scene.segments3.push_back({s.hit.point, s.hit.point + 0.5 * reach / 2 * s.hit.normal,
                                        "n", {Role::Kept, 2.5f}, true});
     }
-    scene.extent3 = reach;
+    scene.extent3 = 0.6 * reach;
 
     // 2D: the t strip.
     const double h = 0.1 * (r.hi - r.lo);
@@ -583,7 +587,7 @@ void CsgRay::draw(const State& s, Scene& scene) {
     } else {
         rows.push_back(static_cast<int>(t.nodes.size()) - 1);
     }
-    double y = 0;
+    double y = -h;  // below the canvas's own x axis
     for (int k : rows) {
         const CsgNode& n = t.nodes[k];
         bool active = k == s.last;

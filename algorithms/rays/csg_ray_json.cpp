@@ -82,7 +82,7 @@ struct JsonIo<CsgRay> {
         // The course's kind of question: the ray (0, 0, −5) + t(0, 0, 1) and A − B, A the
         // sphere of radius 2 at the origin, B the sphere of radius 1 centred at (0, 0, −1).
         return parse_json(R"({
-          "tree": {"op": "difference",
+          "tree": {"op": "difference", "name": "A − B",
                    "left": {"name": "A", "primitive": {"type": "sphere", "params": {"r": 2}}},
                    "right": {"name": "B", "primitive": {"type": "sphere", "params": {"r": 1},
                              "transform": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]}}},
