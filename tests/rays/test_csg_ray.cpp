@@ -2,7 +2,8 @@
 // dropped, touching segments joined in a union and vanishing in an intersection, the reversed
 // normal of a subtracted operand, the eye inside, unbounded primitives with null ends, caps,
 // boxes, transforms on a subtree); 10,000 random rays through random trees of up to 6 spheres,
-// boxes and capped cylinders against the exact long-double intervals and the brute-force
+// boxes and capped cylinders (now and then an unbounded cone, hyperboloid, open cylinder or
+// paraboloid) against the exact long-double intervals and the brute-force
 // classification of csg_reference.hpp, hits on their surfaces; the state machine against the
 // plain functions; errors naming the path; exam problems; determinism and the picture.
 #include <catch2/catch.hpp>
@@ -274,6 +275,7 @@ namespace {
 struct TreeGen {
     cg::Rng& rng;
     CsgTree t;
+    bool unbounded = true;  // now and then a cone, hyperboloid, open cylinder or paraboloid
 
     glm::dmat4 placement(bool scale) {
         glm::dmat4 m = glm::translate(glm::dmat4(1.0), {rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5),
@@ -291,7 +293,15 @@ struct TreeGen {
         cg::CsgNode n;
         n.path = path, n.depth = depth;
         const double k = rng.uniform(0, 1);
-        if (k < 0.4) {
+        if (unbounded && k < 0.08) {  // an unbounded solid: ends at ±∞
+            static const cg::QuadricKind kinds[] = {cg::QuadricKind::Cone, cg::QuadricKind::Hyperboloid,
+                                                    cg::QuadricKind::Cylinder, cg::QuadricKind::Paraboloid};
+            n.quadric.kind = kinds[rng.integer(0, 3)];
+            n.quadric.a = rng.uniform(0.4, 1.5), n.quadric.b = rng.uniform(0.4, 1.5);
+            n.quadric.c = rng.uniform(0.4, 1.5), n.quadric.p = rng.uniform(0.4, 1.5);
+            n.quadric.q = rng.uniform(0.4, 1.5), n.quadric.r = rng.uniform(0.4, 1.5);
+            n.quadric.world_from_model = placement(rng.chance(0.3));
+        } else if (k < 0.4) {
             n.quadric.kind = cg::QuadricKind::Sphere;
             n.quadric.r = rng.uniform(0.4, 2);
             n.quadric.world_from_model = placement(rng.chance(0.3));
@@ -342,7 +352,7 @@ TEST_CASE("csg-ray: 10,000 random rays through random trees agree with both refe
     std::set<int> sizes;
     for (int trial = 0; trial < 10'000; ++trial) {
         cg::Rng rng(77'000 + trial);
-        TreeGen g{rng, {}};
+        TreeGen g{rng, {}, true};
         const int leaves = static_cast<int>(rng.integer(1, 6));
         g.tree(leaves, "tree", 0);
         const CsgTree& t = g.t;
@@ -469,6 +479,7 @@ TEST_CASE("csg-ray: 10,000 random rays through random trees agree with both refe
                            << " infinite ends, " << samples_checked << " samples classified");
     CHECK(skipped < total / 200);
     CHECK(normal_out > hits * 99 / 100);
+    CHECK(infinite_ends > 100);
     CHECK(hits > total / 3);
     CHECK(nonempty > total / 3);
     CHECK(machine_checked == 1000);
