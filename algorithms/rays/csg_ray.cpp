@@ -509,12 +509,12 @@ void strip_row(const CsgSpans& l, const std::string& label, double y, Range r, d
         scene.segments.push_back(
             {{a, y}, {b, y}, "", {role, active ? 7.0f : 4.0f}, !std::isfinite(sp.out.t)});
         if (std::isfinite(sp.in.t))
-            scene.labels.push_back({{a, y - 0.45 * h}, num(sp.in.t, 4), {role}});
+            scene.labels.push_back({{a, y + 0.3 * h}, num(sp.in.t, 4), {role}});
         if (std::isfinite(sp.out.t))
-            scene.labels.push_back({{b, y - 0.45 * h}, num(sp.out.t, 4), {role}});
+            scene.labels.push_back({{b, y + 0.3 * h}, num(sp.out.t, 4), {role}});
     }
     scene.labels.push_back(
-        {{r.lo - 0.02 * (r.hi - r.lo), y + 0.15 * h}, label, {active ? Role::Active : Role::Neutral}});
+        {{r.lo - 0.02 * (r.hi - r.lo), y + 0.3 * h}, label, {active ? Role::Active : Role::Neutral}});
 }
 
 }  // namespace
@@ -575,7 +575,7 @@ void CsgRay::draw(const State& s, Scene& scene) {
     scene.extent3 = 0.6 * reach;
 
     // 2D: the t strip.
-    const double h = 0.1 * (r.hi - r.lo);
+    const double h = 0.12 * (r.hi - r.lo);  // between rows: a name above, the ends' values below
     std::vector<int> rows;
     const int computed_nodes = s.phase == Phase::Nodes ? s.next : static_cast<int>(t.nodes.size());
     if (computed_nodes <= 15) {
