@@ -36,17 +36,25 @@ std::string end_text(double t) {
     return num(t);
 }
 
-// "t² − 10t + 21": a quadratic in t with its signs folded in.
-std::string quadratic_text(double a, double b, double c) {
-    auto term = [](double k, const char* x, bool first) {
-        if (k == 0 && !first) return std::string();
-        std::string sign = k < 0 ? (first ? "−" : " − ") : (first ? "" : " + ");
+// "t² − 10t + 21" (or "t^2 - 10 t + 21" for LaTeX): a quadratic in t with its signs folded in
+// and its zero terms left out.
+std::string quadratic_text(double a, double b, double c, bool latex = false) {
+    std::string s;
+    auto term = [&](double k, const char* x) {
+        if (k == 0) return;
+        const bool first = s.empty();
+        const char* minus = latex ? "-" : "−";
+        s += k < 0 ? (first ? std::string(minus) : std::string(" ") + minus + " ")
+                   : (first ? "" : " + ");
         const double m = std::fabs(k);
-        const bool unit = m == 1 && *x;
-        return sign + (unit ? "" : num(m)) + x;
+        const bool coefficient = !(m == 1 && *x);
+        if (coefficient) s += latex ? tex(m) : num(m);
+        if (*x) s += std::string(coefficient && latex ? " " : "") + x;
     };
-    std::string s = term(a, "t²", true) + term(b, "t", false) + term(c, "", false);
-    return s;
+    term(a, latex ? "t^2" : "t²");
+    term(b, "t");
+    term(c, "");
+    return s.empty() ? "0" : s;
 }
 
 bool is_translation(const dmat4& m) {
@@ -320,7 +328,7 @@ void narrate_leaf(const CsgRay::State& s, int k, StepInfo& info) {
         info.vars.push_back({"c", q.c});
         std::vector<double> roots(r.t.begin(), r.t.begin() + r.count);
         info.vars.push_back({"roots", roots});
-        info.math = "a t^2 + b t + c = " + tex(q.a) + " t^2 + " + tex(q.b) + " t + " + tex(q.c);
+        info.math = "F(E_m + t\\,d_m) = a t^2 + b t + c = " + quadratic_text(q.a, q.b, q.c, true);
     } else {
         const SlabHit& h = tr.slabs;
         const char* axes = "xyz";
@@ -357,7 +365,8 @@ void narrate_node(const CsgRay::State& s, int k, StepInfo& info) {
                                                      : "inside A and not B";
     info.event = csg_op_id(n.op);
     info.line = kLineMerge;
-    info.narration = name + " = " + a + " " + csg_op_symbol(n.op) + " " + b + ": " + a + " = " +
+    const std::string expression = a + " " + csg_op_symbol(n.op) + " " + b;
+    info.narration = (name == expression ? name : name + " = " + expression) + ": " + a + " = " +
                      csg_spans_text(s.lists[n.left]) + ", " + b + " = " +
                      csg_spans_text(s.lists[n.right]) + "; sweeping their ends in t order and "
                      "keeping what is " + rule + " gives " + name + " = " +
