@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
+#include "rays/csg_ray.hpp"
 #include "rays/quadric_mesh.hpp"
 
 namespace cg {
@@ -421,6 +422,26 @@ std::string ray_label(const std::vector<RayTracer::RayNode>& tree, int k) {
     return letter + std::to_string(k);
 }
 
+// A hit on a CSG object: the segment lists of its tree for this ray, leaf by leaf and node by
+// node, and which end is the hit (the lists are recomputed here, for the narration only).
+void narrate_csg_hit(const rt::Object& o, const PreparedCsg& p, const RayTracer::RayNode& ray,
+                     StepInfo& info) {
+    std::vector<CsgSpans> lists;
+    csg_lists(p, ray.origin, ray.direction, lists);
+    std::string merge;
+    for (std::size_t k = 0; k < o.csg.nodes.size(); ++k) {
+        const CsgNode& n = o.csg.nodes[k];
+        std::string name = csg_node_label(n);
+        if (!n.leaf)
+            name += " = " + csg_node_label(o.csg.nodes[n.left]) + " " + csg_op_symbol(n.op) + " " +
+                    csg_node_label(o.csg.nodes[n.right]);
+        merge += (merge.empty() ? "" : "; ") + name + ": " + csg_spans_text(lists[k]);
+    }
+    info.narration += " CSG segments along the ray: " + merge + "; the first end beyond ε, t = " +
+                      num(ray.hit.t, 6) + ", is the hit.";
+    info.vars.push_back({"CSG segments", csg_spans_text(lists.back())});
+}
+
 }  // namespace
 
 void RayTracer::narrate(const State& s, StepInfo& info) {
@@ -487,6 +508,9 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
                 (n.hit.entering ? "" : " (from inside: the normal is turned to face the ray)") +
                 ". Material " + m.name + "; ambient k_a I_a = " + num(m.ka * sc.ambient, 4) + ".";
             info.math = "c = k_a I_a = " + tex(m.ka * sc.ambient, 4);
+            if (sc.objects[n.hit.object].kind == rt::ObjectKind::Csg)
+                narrate_csg_hit(sc.objects[n.hit.object], *s.prepared->objects[n.hit.object].csg,
+                                n, info);
             add("object", object_name(sc, n.hit.object));
             add("t", n.hit.t);
             add("P", vec(n.hit.point));
@@ -638,6 +662,12 @@ void draw_objects(const rt::Scene& sc, double extent, Scene& scene) {
                 if (++triangles > kMaxDrawnTriangles) break;
                 scene.faces3.push_back({{o.p0, o.p1, o.p2}, style, 0.5f, true, true});
                 break;
+            case rt::ObjectKind::Csg:  // every primitive of the tree, fainter than a solid
+                for (std::size_t k = 0; k < o.csg.nodes.size(); ++k)
+                    if (o.csg.nodes[k].leaf)
+                        add_csg_leaf_mesh(o.csg, static_cast<int>(k), extent, style, 0.2f,
+                                          scene.faces3);
+                break;
         }
     }
     if (triangles > kMaxDrawnTriangles)
@@ -730,6 +760,19 @@ void draw_tree(const RayTracer::State& s, double extent, Scene& scene) {
         }
         scene.segments3.push_back({n.origin, n.hit.point, label, {ray_role(n), width}, true});
         scene.points3.push_back({n.hit.point, "", {ray_role(n)}, 5.0f});
+        if (active && sc.objects[n.hit.object].kind == rt::ObjectKind::Csg) {
+            // The solid's segments along the ray, as csg-ray draws them (clipped to t ≥ 0).
+            const CsgHit h = csg_intersect(*s.prepared->objects[n.hit.object].csg, n.origin,
+                                           n.direction);
+            for (const CsgSpan& sp : h.segments) {
+                const double a = std::max(0.0, sp.in.t),
+                             b = std::min(sp.out.t, 1.5 * extent / glm::length(n.direction));
+                if (a < b)
+                    scene.segments3.push_back({n.origin + a * n.direction,
+                                               n.origin + b * n.direction, "",
+                                               {Role::Kept, 5.0f}, false});
+            }
+        }
         scene.segments3.push_back({n.hit.point,
                                    n.hit.point + 0.12 * extent * n.hit.normal,
                                    active ? "n" : "",

@@ -9,6 +9,7 @@
 
 #include "core/format.hpp"
 #include "core/step.hpp"
+#include "rays/rt_csg.hpp"
 
 namespace cg::rt {
 
@@ -60,9 +61,15 @@ double tree_rays(const Scene& s) {
     return 1;
 }
 
+double scene_tests(const Scene& s) {
+    double n = 0;
+    for (const Object& o : s.objects) n += static_cast<double>(object_tests(o));
+    return n;
+}
+
 double pixel_work(const Scene& s) {
     return tree_rays(s) * (1.0 + static_cast<double>(s.lights.size())) *
-           std::max<double>(1, static_cast<double>(s.objects.size()));
+           std::max<double>(1, scene_tests(s));
 }
 
 void validate(const Scene& s) {
@@ -136,9 +143,10 @@ void validate(const Scene& s) {
         }
     }
 
-    if (s.objects.size() > kMaxObjects)
-        throw InputError("objects", "has " + std::to_string(s.objects.size()) +
-                                        " objects (triangles counted one by one); the limit is " +
+    if (scene_tests(s) > static_cast<double>(kMaxObjects))
+        throw InputError("objects", "has " + num(scene_tests(s)) +
+                                        " objects (triangles and CSG leaves counted one by one); "
+                                        "the limit is " +
                                         std::to_string(kMaxObjects));
     // What a run would cost, now that the counts are known to be sane.
     const double per_pixel = pixel_work(s);
@@ -147,7 +155,7 @@ void validate(const Scene& s) {
             tree_rays(s) > 64 ? "settings.max_depth" : "objects",
             "makes one pixel cost up to " + num(per_pixel, 3) + " ray-object tests (" +
                 num(tree_rays(s)) + " rays per tree × " + std::to_string(s.lights.size() + 1) +
-                " for the lights × " + std::to_string(s.objects.size()) +
+                " for the lights × " + num(scene_tests(s)) +
                 " objects); the limit is 1e7: lower max_depth, or use fewer objects or lights");
     const double total = per_pixel * c.width * c.height;
     if (total > kMaxWork)
@@ -182,6 +190,9 @@ void validate(const Scene& s) {
                                                   " are collinear or coincide (zero area)");
                 break;
             }
+            case ObjectKind::Csg:
+                validate_csg_object(o);
+                break;
         }
     }
 }
@@ -233,6 +244,11 @@ Prepared prepare(const Scene& s) {
                 q.normal = unit(glm::cross(q.e1, q.e2));
                 scale = std::max({scale, glm::length(o.p0), glm::length(o.p1), glm::length(o.p2)});
                 break;
+            case ObjectKind::Csg:
+                q.csg = Shared<PreparedCsg>(prepare_csg(o.csg));
+                for (const PreparedCsgLeaf& l : q.csg->leaves)
+                    scale = std::max(scale, glm::length(l.quadric.translation));
+                break;
         }
         p.objects.push_back(q);
     }
@@ -269,12 +285,15 @@ double intersect_object(const PreparedObject& o, dvec3 origin, dvec3 d, double t
             const double t = glm::dot(o.e2, qv) * inv;
             return t > t_min ? t : kInf;
         }
+        case ObjectKind::Csg:
+            return intersect_csg(*o.csg, origin, d, t_min);
     }
     return kInf;
 }
 
-dvec3 object_normal(const PreparedObject& o, dvec3 point) {
+dvec3 object_normal(const PreparedObject& o, dvec3 point, dvec3 origin, dvec3 d, double t_min) {
     if (o.kind == ObjectKind::Quadric) return normal_at(o.quadric, point);
+    if (o.kind == ObjectKind::Csg) return csg_hit_normal(*o.csg, origin, d, t_min);
     return o.normal;
 }
 
@@ -288,7 +307,7 @@ Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t
     if (h.object < 0) return h;
     h.t = best;
     h.point = origin + best * d;
-    dvec3 n = object_normal(p.objects[h.object], h.point);
+    dvec3 n = object_normal(p.objects[h.object], h.point, origin, d, t_min);
     if (n == dvec3(0.0)) n = -unit(d);  // a cone's apex: no gradient; face the ray
     h.entering = glm::dot(n, d) <= 0;   // a grazing ray counts as arriving from outside
     h.normal = h.entering ? n : -n;

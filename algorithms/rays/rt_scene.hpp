@@ -39,6 +39,8 @@
 #include <string>
 #include <vector>
 
+#include "core/shared.hpp"
+#include "rays/csg.hpp"
 #include "rays/quadric.hpp"
 
 namespace cg::rt {
@@ -64,7 +66,7 @@ struct Light {
     bool operator==(const Light&) const = default;
 };
 
-enum class ObjectKind : std::uint8_t { Quadric, Plane, Triangle };
+enum class ObjectKind : std::uint8_t { Quadric, Plane, Triangle, Csg };
 
 struct Object {
     ObjectKind kind = ObjectKind::Quadric;
@@ -74,6 +76,7 @@ struct Object {
     Quadric quadric;    // Quadric
     glm::dvec3 p0{0.0}, p1{0.0}, p2{0.0};  // Triangle vertices; Plane: p0 is a point on it
     glm::dvec3 normal{0, 0, 1};            // Plane: as given (any length > 0)
+    CsgTree csg;                           // Csg: the tree (rays/rt_csg.hpp)
     bool operator==(const Object&) const = default;
 };
 
@@ -115,9 +118,11 @@ constexpr double kMaxAttenuation = 1e6;  // 1/(c1 + c2 r + c3 r²) is capped her
 // The cost of a scene in ray-object tests, worst case: every ray of a primary ray's tree (a
 // full binary tree of depth max_depth when some materials mirror and others refract — or one
 // does both —, a chain when only one kind does) meets every object and casts a shadow ray to
-// every light. The tracer has no acceleration structure, so these bound its running time.
+// every light. The tracer has no acceleration structure, so these bound its running time. A CSG
+// object costs one test per leaf (object_tests).
 double tree_rays(const Scene& s);      // rays in one primary ray's tree, at most
-double pixel_work(const Scene& s);     // tree_rays × (1 + lights) × objects
+double scene_tests(const Scene& s);    // ray-object tests per ray: objects, CSG leaves each
+double pixel_work(const Scene& s);     // tree_rays × (1 + lights) × scene_tests
 constexpr double kMaxPixelWork = 1e7;  // one pixel (one step): well under a second
 constexpr double kMaxWork = 2e10;      // the whole image: a few minutes at most
 
@@ -137,6 +142,7 @@ struct PreparedObject {
     PreparedQuadric quadric;
     glm::dvec3 p0{0.0}, e1{0.0}, e2{0.0};  // a triangle's p0, p1 − p0, p2 − p0
     glm::dvec3 normal{0.0};                // a plane's or triangle's unit normal
+    Shared<PreparedCsg> csg;               // a CSG object's tree
     bool operator==(const PreparedObject&) const = default;
 };
 
@@ -178,10 +184,13 @@ Hit nearest_hit(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
 // object found, or -1.
 int first_blocker(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, double t_min,
                   double t_max);
-// The hit's t with one object (or +inf), and its normal there: the pieces of nearest_hit.
+// The hit's t with one object (or +inf), and its normal there: the pieces of nearest_hit. A CSG
+// object's normal depends on which surface the ray met, not only on the point: object_normal
+// takes the ray too.
 double intersect_object(const PreparedObject& o, glm::dvec3 origin, glm::dvec3 direction,
                         double t_min);
-glm::dvec3 object_normal(const PreparedObject& o, glm::dvec3 point);
+glm::dvec3 object_normal(const PreparedObject& o, glm::dvec3 point, glm::dvec3 origin,
+                         glm::dvec3 direction, double t_min);
 
 // ---- shading and the secondary rays (shared by the plain tracer and the state machine) ----
 

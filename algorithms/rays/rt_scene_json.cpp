@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "rays/csg_json.hpp"
 #include "rays/rays_json.hpp"
 
 namespace cg::rt {
@@ -197,6 +198,11 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
                 }
                 s.objects.push_back(tri);
             }
+        } else if (type == "csg") {
+            o.only({"type", "name", "material", "tree"});
+            obj.kind = ObjectKind::Csg;
+            obj.csg = csg_json::tree(o.get("tree"), o.field("tree"));
+            s.objects.push_back(obj);
         } else {
             o.only({"type", "name", "material", "params", "transform", "zmin", "zmax"});
             const bool quadric = type == "sphere" || type == "ellipsoid" || type == "paraboloid" ||
@@ -204,7 +210,7 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
             if (!quadric)
                 throw InputError(o.field("type"),
                                  std::string("must be one of ") + rays_json::kQuadricTypes +
-                                     ", plane, triangle, mesh (got \"" + type + "\")");
+                                     ", plane, triangle, mesh, csg (got \"" + type + "\")");
             obj.kind = ObjectKind::Quadric;
             obj.quadric = rays_json::quadric(o);
             s.objects.push_back(obj);
@@ -324,6 +330,9 @@ json scene_to_json(const Scene& s) {
             case ObjectKind::Triangle:
                 j = json{{"type", "triangle"},
                          {"vertices", {nice_point(o.p0), nice_point(o.p1), nice_point(o.p2)}}};
+                break;
+            case ObjectKind::Csg:
+                j = json{{"type", "csg"}, {"tree", csg_json::tree_json(o.csg)}};
                 break;
         }
         j["name"] = o.name;

@@ -14,7 +14,9 @@
 //    "objects":   [{"type": a quadric type (see rays_json.hpp) with its "params", "transform",
 //                   "zmin", "zmax"} | {"type": "plane", "point": [x, y, z], "normal": [x, y, z]} |
 //                  {"type": "triangle", "vertices": [[x, y, z] × 3]} |
-//                  {"type": "mesh", "vertices": [[x, y, z], …], "triangles": [[i, j, k], …]},
+//                  {"type": "mesh", "vertices": [[x, y, z], …], "triangles": [[i, j, k], …]} |
+//                  {"type": "csg", "tree": NODE (rays/csg_json.hpp: union, intersection and
+//                   difference of quadric solids and boxes), one solid of one material},
 //                  each with "material": a material's name and an optional "name"],
 //    "stepping":  {…} (the ray-tracer algorithm's; ignored by render-scene)}
 //
