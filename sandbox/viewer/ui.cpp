@@ -61,8 +61,9 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
                                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                     ImGuiWindowFlags_NoBringToFrontOnFocus;
 
-// The panels Tab and Shift-Tab move the keyboard through, in order: those with controls.
-constexpr const char* kKeyboardPanels[] = {"Study", "Step", "Pseudocode"};
+// The panels Tab and Shift-Tab move the keyboard through, in order: those with controls (the
+// canvas has its sliders, the pseudocode its breakpoints).
+constexpr const char* kKeyboardPanels[] = {"Study", "Canvas", "Step", "Pseudocode"};
 
 template <class Draw>
 void panel(Session& s, const char* title, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra,

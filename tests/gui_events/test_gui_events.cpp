@@ -256,12 +256,16 @@ TEST_CASE("gui events: the keyboard reaches every panel, and F1 lists the keys",
     d.key(SDLK_TAB);
     CHECK(d.session().focused_panel == "Study");
     d.key(SDLK_TAB);
+    CHECK(d.session().focused_panel == "Canvas");
+    d.key(SDLK_TAB);
     CHECK(d.session().focused_panel == "Step");
     CHECK(ImGui::GetIO().NavVisible);
     d.key(SDLK_RIGHT);  // Reset → Back: moves the cursor, does not step
     CHECK(d.session().index() == 2);
     d.key(SDLK_SPACE);  // presses Back
     CHECK(d.session().index() == 1);
+    d.key(SDLK_TAB, KMOD_LSHIFT);
+    CHECK(d.session().focused_panel == "Canvas");
     d.key(SDLK_TAB, KMOD_LSHIFT);
     CHECK(d.session().focused_panel == "Study");
     d.key(SDLK_TAB, KMOD_LSHIFT);
