@@ -65,22 +65,23 @@ double height_at(const HeightField& h, const Perlin& perlin, dvec2 uv) {
     return 0;
 }
 
-BumpResult blinn_bump(const UvFrame& f, dvec3 outward, const HeightField& h, const Perlin& perlin) {
-    BumpResult r;
-    const dvec2 uv = f.uv;
+void bump_heights(const HeightField& h, const Perlin& perlin, dvec2 uv, BumpResult& r) {
     const double s = h.step;
     r.B = height_at(h, perlin, uv);
     r.samples = {height_at(h, perlin, uv + dvec2(s, 0)), height_at(h, perlin, uv - dvec2(s, 0)),
                  height_at(h, perlin, uv + dvec2(0, s)), height_at(h, perlin, uv - dvec2(0, s))};
     r.B_u = (r.samples[0] - r.samples[1]) / (2 * s);
     r.B_v = (r.samples[2] - r.samples[3]) / (2 * s);
+}
+
+void bump_normal(const UvFrame& f, dvec3 outward, BumpResult& r) {
     r.n = glm::cross(f.P_u, f.P_v);
     const double len = glm::length(r.n);
     r.singular = f.singular || !(len > 1e-12 * glm::length(f.P_u) * glm::length(f.P_v)) ||
                  !(len > 0);
     if (r.singular) {
         r.normal = r.perturbed = outward;
-        return r;
+        return;
     }
     if (glm::dot(r.n, outward) < 0) {  // mirrored parametrisation: orient n outward
         r.n = -r.n;
@@ -94,7 +95,25 @@ BumpResult blinn_bump(const UvFrame& f, dvec3 outward, const HeightField& h, con
     r.normal = r.n / len;
     r.perturbed = unit(r.n + r.D);
     if (r.perturbed == dvec3(0.0)) r.perturbed = r.normal;
+}
+
+BumpResult blinn_bump(const UvFrame& f, dvec3 outward, const HeightField& h, const Perlin& perlin) {
+    BumpResult r;
+    bump_heights(h, perlin, f.uv, r);
+    bump_normal(f, outward, r);
     return r;
+}
+
+dvec3 outward_normal(const PreparedUv& p, dvec3 P) {
+    switch (p.kind) {
+        case UvKind::Quadric:
+            return normal_at(p.quadric, P);
+        case UvKind::Plane:
+            return p.n;
+        case UvKind::Triangle:
+            return unit(glm::cross(p.e1, p.e2));
+    }
+    return p.n;
 }
 
 }  // namespace cg

@@ -64,8 +64,15 @@ struct BumpResult {
     bool operator==(const BumpResult&) const = default;
 };
 // Blinn's perturbation at a frame; `outward` is the surface's outward unit normal there (the
-// orientation, and the answer where the parametrisation is singular).
+// orientation, and the answer where the parametrisation is singular). It is the two halves
+// below, one after the other.
 BumpResult blinn_bump(const UvFrame& frame, glm::dvec3 outward, const HeightField& h,
                       const Perlin& perlin);
+// B, the four samples and the central differences B_u, B_v.
+void bump_heights(const HeightField& h, const Perlin& perlin, glm::dvec2 uv, BumpResult& r);
+// n = P_u × P_v oriented outward, D and the perturbed normal (needs B_u, B_v in r).
+void bump_normal(const UvFrame& frame, glm::dvec3 outward, BumpResult& r);
+// The surface's outward unit normal at P (a quadric's ∇F direction, a plane's or triangle's).
+glm::dvec3 outward_normal(const PreparedUv& p, glm::dvec3 P);
 
 }  // namespace cg

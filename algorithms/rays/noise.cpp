@@ -182,9 +182,12 @@ SolidSample solid_sample(const SolidTexture& t, const Perlin& perlin, dvec3 p) {
     s.axis = unit(t.axis);
     switch (t.kind) {
         case SolidKind::Checker: {
-            const double k =
-                std::floor(p.x / t.size) + std::floor(p.y / t.size) + std::floor(p.z / t.size);
+            const dvec3 c = glm::floor(p / t.size);
+            const double k = c.x + c.y + c.z;
             s.t = std::fmod(std::fabs(k), 2.0) == 1 ? 1 : 0;
+            s.cell_known = true;
+            s.cell = {static_cast<long long>(c.x), static_cast<long long>(c.y),
+                      static_cast<long long>(c.z)};
             break;
         }
         case SolidKind::Stripes:
@@ -202,6 +205,12 @@ SolidSample solid_sample(const SolidTexture& t, const Perlin& perlin, dvec3 p) {
             s.t = 0.5 * (1 + std::sin(kTwoPi * glm::dot(p, s.axis) / t.period +
                                       t.amplitude * s.noise));
             break;
+    }
+    if (uses_noise(t.kind)) {
+        const dvec3 c = glm::floor(t.frequency * p);
+        s.cell_known = true;
+        s.cell = {static_cast<long long>(c.x), static_cast<long long>(c.y),
+                  static_cast<long long>(c.z)};
     }
     s.color = (1 - s.t) * t.colors[0] + s.t * t.colors[1];
     return s;

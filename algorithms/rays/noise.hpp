@@ -91,6 +91,8 @@ struct SolidSample {
     double t = 0;          // the mix between c0 and c1 (checker: 0 or 1)
     double noise = 0;      // wood: the noise; marble: the turbulence (0 for the others)
     glm::dvec3 axis{0.0};  // unit axis
+    bool cell_known = false;                 // wood, marble: the noise cell ⌊f p⌋; checker ⌊p/s⌋
+    std::array<long long, 3> cell{0, 0, 0};
     bool operator==(const SolidSample&) const = default;
 };
 // `perlin` must be make_perlin(t.seed) when the texture uses noise.

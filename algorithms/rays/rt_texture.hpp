@@ -76,6 +76,7 @@ struct RayDifferential {
 struct Surface {
     Color ka{0.0}, kd{0.0};
     glm::dvec3 normal{0.0};  // the shading normal, facing the ray
+    bool operator==(const Surface&) const = default;
 };
 
 // Everything the texture steps show.

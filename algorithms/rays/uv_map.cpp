@@ -218,4 +218,80 @@ UvFrame uv_frame(const PreparedUv& s, dvec3 P) {
     return f;
 }
 
+dvec3 uv_point(const PreparedUv& s, dvec2 uv) {
+    switch (s.kind) {
+        case UvKind::Plane:
+            return s.origin + s.scale * (uv.x * s.a + uv.y * s.b);
+        case UvKind::Triangle: {
+            const dvec2 w = uv - s.uv0;
+            const double det = s.j1.x * s.j2.y - s.j1.y * s.j2.x;
+            const double beta = (s.j2.y * w.x - s.j2.x * w.y) / det;
+            const double gamma = (-s.j1.y * w.x + s.j1.x * w.y) / det;
+            return s.p0 + beta * s.e1 + gamma * s.e2;
+        }
+        case UvKind::Quadric: {
+            const double phi = kTwoPi * (uv.x - 0.5);
+            dvec3 m;
+            if (sphere_like(s.quadric_kind)) {
+                const double theta = kPi * (1 - uv.y);
+                m = {s.sxyz.x * std::sin(theta) * std::cos(phi),
+                     s.sxyz.y * std::sin(theta) * std::sin(phi), s.sxyz.z * std::cos(theta)};
+            } else {
+                const double z = s.zmin + uv.y * s.height;
+                double rho = 1;
+                if (s.quadric_kind == QuadricKind::Cone) rho = std::fabs(z) / s.cone_r;
+                if (s.quadric_kind == QuadricKind::Paraboloid) rho = std::sqrt(std::max(z, 0.0));
+                if (s.quadric_kind == QuadricKind::Hyperboloid)
+                    rho = std::sqrt(1 + z * z / (s.hyper_c * s.hyper_c));
+                m = {s.sxyz.x * rho * std::cos(phi), s.sxyz.y * rho * std::sin(phi), z};
+            }
+            return s.linear * m + s.quadric.translation;
+        }
+    }
+    return s.origin;
+}
+
+// The point must lie on the surface: the map is only meaningful there.
+void check_on_surface(const UvSurface& s, const PreparedUv& p, dvec3 P, const std::string& field) {
+    switch (s.kind) {
+        case UvKind::Plane: {
+            const double d = glm::dot(P - p.origin, p.n);
+            if (std::fabs(d) > 1e-9 * (1 + glm::length(P) + glm::length(p.origin)))
+                throw InputError(field, "must lie on the plane (it is " + num(d, 4) +
+                                            " off it along the normal)");
+            return;
+        }
+        case UvKind::Triangle: {
+            const dvec3 n = unit(glm::cross(p.e1, p.e2));
+            const double d = glm::dot(P - p.p0, n);
+            const double size = 1 + glm::length(p.e1) + glm::length(p.e2) + glm::length(P);
+            if (std::fabs(d) > 1e-9 * size)
+                throw InputError(field, "must lie in the triangle's plane (it is " + num(d, 4) +
+                                            " off it)");
+            const dvec3 b = uv_frame(p, P).barycentric;
+            if (b.x < -1e-9 || b.y < -1e-9 || b.z < -1e-9)
+                throw InputError(field, "must lie inside the triangle (its barycentric weights are " +
+                                            num(b, 4) + ")");
+            return;
+        }
+        case UvKind::Quadric: {
+            const PreparedQuadric& q = p.quadric;
+            const dvec3 m = q.transformed ? q.linear_inv * (P - q.translation) : P;
+            const QuadricCoefficients& f = q.f;
+            const double size = std::fabs(f.A) * m.x * m.x + std::fabs(f.B) * m.y * m.y +
+                                std::fabs(f.C) * m.z * m.z + std::fabs(f.D * m.z) + std::fabs(f.E);
+            const double F = eval_F(f, m);
+            if (!(std::fabs(F) <= 1e-9 * size) || size == 0)
+                throw InputError(field, std::string("must lie on the ") +
+                                            quadric_kind_name(s.quadric.kind) + " (F = " +
+                                            num(F, 4) + " there, not 0)");
+            if (m.z < q.zmin - 1e-9 * (1 + std::fabs(q.zmin)) ||
+                m.z > q.zmax + 1e-9 * (1 + std::fabs(q.zmax)))
+                throw InputError(field, "must lie inside the slab zmin ≤ z ≤ zmax (model z = " +
+                                            num(m.z) + ")");
+            return;
+        }
+    }
+}
+
 }  // namespace cg

@@ -84,5 +84,11 @@ struct UvFrame {
 };
 // The texture coordinates and partials at a point on (or near: it is projected) the surface.
 UvFrame uv_frame(const PreparedUv& s, glm::dvec3 world_point);
+// Throws InputError(field, …) unless P lies on the surface (within round-off; inside the
+// triangle, inside the quadric's slab): a texture lookup means nothing elsewhere.
+void check_on_surface(const UvSurface& s, const PreparedUv& p, glm::dvec3 P,
+                      const std::string& field);
+// The other way: the surface point P(u, v), world space (for pictures and tests).
+glm::dvec3 uv_point(const PreparedUv& s, glm::dvec2 uv);
 
 }  // namespace cg
