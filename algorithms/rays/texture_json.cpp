@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stb_image.h>  // the implementation is in libstb
 
 #include "rays/rays_json.hpp"
@@ -40,6 +41,11 @@ int whole(const Reader& r, const char* key, int lo, int hi, const char* what) {
 // ---- [image files] --------------------------------------------------------------------------
 
 TextureImage read_image_file(const std::string& path, const std::string& field) {
+    // Only regular files: a directory, a device or a pipe (which could block) is refused.
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        throw InputError(field, "cannot read \"" + path + "\": not a regular file");
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f)
         throw InputError(field, "cannot read \"" + path + "\": " +

@@ -38,6 +38,10 @@ void validate_uv_surface(const UvSurface& s, const std::string& field) {
             validate_quadric(s.quadric, field);
             return;
         case UvKind::Plane: {
+            for (int c = 0; c < 3; ++c)
+                if (!std::isfinite(s.origin[c]) || std::fabs(s.origin[c]) > 1e12)
+                    throw InputError(field + ".point[" + std::to_string(c) + "]",
+                                     "must be a finite number of magnitude at most 1e12");
             const dvec3 n = unit(s.normal);
             if (n == dvec3(0.0))
                 throw InputError(field + ".normal", "must not be the zero vector");
@@ -55,6 +59,19 @@ void validate_uv_surface(const UvSurface& s, const std::string& field) {
             return;
         }
         case UvKind::Triangle: {
+            for (int k = 0; k < 3; ++k)
+                for (int c = 0; c < 3; ++c)
+                    if (!std::isfinite(s.p[k][c]) || std::fabs(s.p[k][c]) > 1e12)
+                        throw InputError(field + ".vertices[" + std::to_string(k) + "][" +
+                                             std::to_string(c) + "]",
+                                         "must be a finite number of magnitude at most 1e12");
+            const dvec3 e1 = s.p[1] - s.p[0], e2 = s.p[2] - s.p[0];
+            const double area2 = glm::length(glm::cross(e1, e2));
+            if (!(area2 > 1e-12 * glm::length(e1) * glm::length(e2)) || !(area2 > 0))
+                throw InputError(field + ".vertices",
+                                 "is degenerate: the corners " + num(s.p[0], 4) + ", " +
+                                     num(s.p[1], 4) + ", " + num(s.p[2], 4) +
+                                     " are collinear or coincide (zero area)");
             for (int k = 0; k < 3; ++k)
                 for (int c = 0; c < 2; ++c)
                     if (!std::isfinite(s.uv[k][c]) || std::fabs(s.uv[k][c]) > 1e9)

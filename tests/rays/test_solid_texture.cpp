@@ -118,13 +118,18 @@ TEST_CASE("solid-texture: noise is smooth across cell faces (value, slope and cu
         // C¹: one-sided slopes agree (differences of f on each side, to O(e)).
         const double left = (f(0) - f(-e)) / e, right = (f(e) - f(0)) / e;
         CHECK(std::fabs(left - right) < 60 * e);
-        // C²: one-sided second differences agree too (the quintic fade's f'' = 0 at the ends).
+        // C²: one-sided second differences agree too. The quintic fade has f'' = 0 at 0 and 1,
+        // so across a face the noise's second derivative along the face normal is 0 on both
+        // sides (the classic 3t² − 2t³ would jump by 6 × the difference of the ramps there).
         const double c_left = (f(0) - 2 * f(-e) + f(-2 * e)) / (e * e),
                      c_right = (f(2 * e) - 2 * f(e) + f(0)) / (e * e);
-        CHECK(std::fabs(c_left - c_right) < 1e-2 * (1 + std::fabs(c_left)) + 2e3 * e);
-        curved += std::fabs(c_left) > 0.1;
+        CHECK(std::fabs(c_left - c_right) < 0.1);
+        CHECK(std::fabs(c_left) < 0.1);
+        // Inside the cell the noise does curve: the check above is not trivially passed.
+        const double mid = (f(0.5 + e) - 2 * f(0.5) + f(0.5 - e)) / (e * e);
+        curved += std::fabs(mid) > 0.1;
     }
-    CHECK(curved > 1000);  // the curvature is not trivially 0
+    CHECK(curved > 1000);
 }
 
 TEST_CASE("solid-texture: the fade curve 6t⁵ − 15t⁴ + 10t³", "[rays][solid-texture]") {
@@ -135,7 +140,7 @@ TEST_CASE("solid-texture: the fade curve 6t⁵ − 15t⁴ + 10t³", "[rays][soli
     CHECK(cg::fade(0.75) == 0.896484375);
     for (int k = 0; k <= 100; ++k) {
         const double x = k / 100.0;
-        CHECK(std::fabs(cg::fade(x) - t::fade_ref(x)) < 1e-15L);
+        CHECK(std::fabs(cg::fade(x) - t::fade_ref(x)) < 1e-14L);
     }
     const double h = 1e-5;
     CHECK(std::fabs((cg::fade(h) - cg::fade(0)) / h) < 1e-8);               // f'(0) = 0
