@@ -271,13 +271,8 @@ dvec3 uv_point(const PreparedUv& s, dvec2 uv) {
 // The point must lie on the surface: the map is only meaningful there.
 void check_on_surface(const UvSurface& s, const PreparedUv& p, dvec3 P, const std::string& field) {
     switch (s.kind) {
-        case UvKind::Plane: {
-            const double d = glm::dot(P - p.origin, p.n);
-            if (std::fabs(d) > 1e-9 * (1 + glm::length(P) + glm::length(p.origin)))
-                throw InputError(field, "must lie on the plane (it is " + num(d, 4) +
-                                            " off it along the normal)");
+        case UvKind::Plane:  // a point off the plane is projected onto it: u, v ignore n
             return;
-        }
         case UvKind::Triangle: {
             const dvec3 n = unit(glm::cross(p.e1, p.e2));
             const double d = glm::dot(P - p.p0, n);
@@ -298,7 +293,7 @@ void check_on_surface(const UvSurface& s, const PreparedUv& p, dvec3 P, const st
             const double size = std::fabs(f.A) * m.x * m.x + std::fabs(f.B) * m.y * m.y +
                                 std::fabs(f.C) * m.z * m.z + std::fabs(f.D * m.z) + std::fabs(f.E);
             const double F = eval_F(f, m);
-            if (!(std::fabs(F) <= 1e-9 * size) || size == 0)
+            if (!(std::fabs(F) <= 1e-9 * size))  // size 0: the cone's apex, on the surface
                 throw InputError(field, std::string("must lie on the ") +
                                             quadric_kind_name(s.quadric.kind) + " (F = " +
                                             num(F, 4) + " there, not 0)");

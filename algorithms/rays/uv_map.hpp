@@ -85,7 +85,9 @@ struct UvFrame {
 // The texture coordinates and partials at a point on (or near: it is projected) the surface.
 UvFrame uv_frame(const PreparedUv& s, glm::dvec3 world_point);
 // Throws InputError(field, …) unless P lies on the surface (within round-off; inside the
-// triangle, inside the quadric's slab): a texture lookup means nothing elsewhere.
+// triangle, inside the quadric's slab): a texture lookup means nothing elsewhere. A plane is
+// the exception: a point off it is projected onto it along the normal (u and v ignore the
+// normal component), so a plane whose normal is edited keeps its points.
 void check_on_surface(const UvSurface& s, const PreparedUv& p, glm::dvec3 P,
                       const std::string& field);
 // The other way: the surface point P(u, v), world space (for pictures and tests).

@@ -295,8 +295,8 @@ TEST_CASE("bump-map: bad input is refused with the field named", "[rays][bump-ma
                Catch::StartsWith("height.amplitude: must be a number of magnitude at most 1e6"));
     CHECK_THAT(error_of("{" + plane + R"(, "height": {"type": "sines"}, "light": [0, 0, 0]})"),
                Catch::StartsWith("light: must not be the zero vector"));
-    CHECK_THAT(error_of(R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0, 0, 2], "height": {"type": "sines"}})"),
-               Catch::StartsWith("point: must lie on the plane"));
+    CHECK_THAT(error_of(R"({"surface": {"type": "sphere", "params": {"r": 1}}, "point": [0, 0, 2], "height": {"type": "sines"}})"),
+               Catch::StartsWith("point: must lie on the sphere"));
     CHECK_THAT(error_of(R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "uv_scale": 0}, "point": [0, 0, 0], "height": {"type": "sines"}})"),
                Catch::StartsWith("surface.uv_scale: must be a length between 1e-9 and 1e12"));
 }
