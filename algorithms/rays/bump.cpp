@@ -26,12 +26,13 @@ const char* height_kind_id(HeightKind k) {
 
 void validate_height(const HeightField& h, const std::string& field) {
     if (!(std::fabs(h.amplitude) <= 1e6))
-        throw InputError(field + ".amplitude",
-                         "must be a number of magnitude at most 1e6 (got " + num(h.amplitude) + ")");
+        throw InputError(field + ".amplitude", "must be a number of magnitude at most 1e6 (got " +
+                                                   num(h.amplitude) + ")");
     if (!(h.step >= 1e-9 && h.step <= 0.1))
         throw InputError(field + ".step",
                          "must be between 1e-9 and 0.1: the (u, v) step of the finite "
-                         "differences B_u, B_v (got " + num(h.step) + ")");
+                         "differences B_u, B_v (got " +
+                             num(h.step) + ")");
     switch (h.kind) {
         case HeightKind::Sines:
         case HeightKind::Noise:
@@ -77,8 +78,8 @@ void bump_heights(const HeightField& h, const Perlin& perlin, dvec2 uv, BumpResu
 void bump_normal(const UvFrame& f, dvec3 outward, BumpResult& r) {
     r.n = glm::cross(f.P_u, f.P_v);
     const double len = glm::length(r.n);
-    r.singular = f.singular || !(len > 1e-12 * glm::length(f.P_u) * glm::length(f.P_v)) ||
-                 !(len > 0);
+    r.singular =
+        f.singular || !(len > 1e-12 * glm::length(f.P_u) * glm::length(f.P_v)) || !(len > 0);
     if (r.singular) {
         r.normal = r.perturbed = outward;
         return;

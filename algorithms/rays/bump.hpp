@@ -51,16 +51,16 @@ void validate_height(const HeightField& h, const std::string& field);
 double height_at(const HeightField& h, const Perlin& perlin, glm::dvec2 uv);
 
 struct BumpResult {
-    double B = 0;                          // B(u, v)
-    std::array<double, 4> samples{};       // B(u + h, v), B(u − h, v), B(u, v + h), B(u, v − h)
+    double B = 0;                     // B(u, v)
+    std::array<double, 4> samples{};  // B(u + h, v), B(u − h, v), B(u, v + h), B(u, v − h)
     double B_u = 0, B_v = 0;
-    glm::dvec3 n{0.0};                     // P_u × P_v, oriented outward
-    bool flipped = false;                  // P_u × P_v pointed inward and was negated
+    glm::dvec3 n{0.0};     // P_u × P_v, oriented outward
+    bool flipped = false;  // P_u × P_v pointed inward and was negated
     glm::dvec3 n_cross_pv{0.0}, n_cross_pu{0.0};
-    glm::dvec3 D{0.0};                     // the perturbation
-    glm::dvec3 normal{0.0};                // n/|n|, or `outward` where n = 0
-    glm::dvec3 perturbed{0.0};             // (n + D)/|n + D|, unit
-    bool singular = false;                 // n = 0: nothing to perturb, n' = the outward normal
+    glm::dvec3 D{0.0};          // the perturbation
+    glm::dvec3 normal{0.0};     // n/|n|, or `outward` where n = 0
+    glm::dvec3 perturbed{0.0};  // (n + D)/|n + D|, unit
+    bool singular = false;      // n = 0: nothing to perturb, n' = the outward normal
     bool operator==(const BumpResult&) const = default;
 };
 // Blinn's perturbation at a frame; `outward` is the surface's outward unit normal there (the

@@ -56,9 +56,9 @@ void BumpMap::validate(const Input& in) {
     validate_uv_surface(in.surface, "surface");
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(in.point[i]) || std::fabs(in.point[i]) > 1e12)
-            throw InputError("point[" + std::to_string(i) + "]",
-                             "must be a finite number of magnitude at most 1e12 (got " +
-                                 num(in.point[i]) + ")");
+            throw InputError(
+                "point[" + std::to_string(i) + "]",
+                "must be a finite number of magnitude at most 1e12 (got " + num(in.point[i]) + ")");
     validate_height(in.height, "height");
     if (in.has_light) {
         for (int i = 0; i < 3; ++i)
@@ -66,8 +66,9 @@ void BumpMap::validate(const Input& in) {
                 throw InputError("light[" + std::to_string(i) + "]",
                                  "must be a finite number of magnitude at most 1e12");
         if (unit(in.light) == dvec3(0.0))
-            throw InputError("light", "must not be the zero vector: it is the direction toward "
-                                      "the light");
+            throw InputError("light",
+                             "must not be the zero vector: it is the direction toward "
+                             "the light");
     }
     check_on_surface(in.surface, prepare_uv(in.surface), in.point, "point");
 }
@@ -85,7 +86,8 @@ BumpMap::State BumpMap::start(const Input& in) {
 BumpMap::Result BumpMap::solve(const Input& in) {
     Result r;
     const PreparedUv p = prepare_uv(in.surface);
-    const Perlin perlin = in.height.kind == HeightKind::Noise ? make_perlin(in.height.seed) : Perlin{};
+    const Perlin perlin =
+        in.height.kind == HeightKind::Noise ? make_perlin(in.height.seed) : Perlin{};
     r.frame = uv_frame(p, in.point);
     r.bump = blinn_bump(r.frame, outward_normal(p, in.point), in.height, perlin);
     r.tilt_deg = tilt_of(r.bump);
@@ -164,20 +166,20 @@ void BumpMap::narrate(const State& s, StepInfo& info) {
                     break;
             }
             info.narration = formula + ": B(u, v) = " + num(b.B, 6) + "; with h = " + num(h.step) +
-                             ", B(u ± h, v) = " + num(b.samples[0], 6) + ", " + num(b.samples[1], 6) +
-                             " and B(u, v ± h) = " + num(b.samples[2], 6) + ", " +
-                             num(b.samples[3], 6) + ".";
+                             ", B(u ± h, v) = " + num(b.samples[0], 6) + ", " +
+                             num(b.samples[1], 6) + " and B(u, v ± h) = " + num(b.samples[2], 6) +
+                             ", " + num(b.samples[3], 6) + ".";
             info.math = "B(u, v) = " + tex(b.B, 6);
             break;
         }
         case Phase::Differences:
             info.event = "differences";
             info.line = kLineDifferences;
-            info.narration = "B_u = (" + num(b.samples[0], 6) + " − " + num(b.samples[1], 6) +
-                             ")/(2·" + num(h.step) + ") = " + num(b.B_u, 6) + ", B_v = (" +
-                             num(b.samples[2], 6) + " − " + num(b.samples[3], 6) + ")/(2·" +
-                             num(h.step) + ") = " + num(b.B_v, 6) +
-                             (b.B_u == 0 && b.B_v == 0 ? ": the surface is flat here, n stays." : ".");
+            info.narration =
+                "B_u = (" + num(b.samples[0], 6) + " − " + num(b.samples[1], 6) + ")/(2·" +
+                num(h.step) + ") = " + num(b.B_u, 6) + ", B_v = (" + num(b.samples[2], 6) + " − " +
+                num(b.samples[3], 6) + ")/(2·" + num(h.step) + ") = " + num(b.B_v, 6) +
+                (b.B_u == 0 && b.B_v == 0 ? ": the surface is flat here, n stays." : ".");
             info.math = "B_u = \\frac{B(u+h, v) - B(u-h, v)}{2h} = " + tex(b.B_u, 6) +
                         ",\\quad B_v = " + tex(b.B_v, 6);
             break;
@@ -194,11 +196,13 @@ void BumpMap::narrate(const State& s, StepInfo& info) {
             }
             info.event = "normal";
             info.line = kLinePerturb;
-            info.narration = "n = P_u × P_v = " + num(b.n, 5) + (b.flipped ? " (turned outward)" : "") +
-                             ", |n| = " + num(glm::length(b.n), 5) + "; n × P_v = " +
-                             num(b.n_cross_pv, 5) + ", n × P_u = " + num(b.n_cross_pu, 5) +
-                             "; D = (B_u (n × P_v) − B_v (n × P_u))/|n| = " + num(b.D, 5) + ".";
-            info.math = "D = \\frac{B_u (n \\times P_v) - B_v (n \\times P_u)}{|n|} = " + tex(b.D, 5);
+            info.narration =
+                "n = P_u × P_v = " + num(b.n, 5) + (b.flipped ? " (turned outward)" : "") +
+                ", |n| = " + num(glm::length(b.n), 5) + "; n × P_v = " + num(b.n_cross_pv, 5) +
+                ", n × P_u = " + num(b.n_cross_pu, 5) +
+                "; D = (B_u (n × P_v) − B_v (n × P_u))/|n| = " + num(b.D, 5) + ".";
+            info.math =
+                "D = \\frac{B_u (n \\times P_v) - B_v (n \\times P_u)}{|n|} = " + tex(b.D, 5);
             break;
         case Phase::Normalise:
         case Phase::Done:
@@ -265,12 +269,16 @@ void BumpMap::draw(const State& s, Scene& scene) {
     const double L = 0.35 * std::max(glm::length(uv_point(p, hi) - uv_point(p, lo)), 1e-6);
     scene.points3.push_back({P, "P", {Role::Active}, 6.0f});
     scene.segments3.push_back({P, P + L * s.outward, "n", {Role::Neutral, 2.0f}, true});
-    scene.segments3.push_back({P + offset, P + offset + L * s.outward, "n (smooth)",
-                               {Role::Neutral, 2.0f}, true});
+    scene.segments3.push_back(
+        {P + offset, P + offset + L * s.outward, "n (smooth)", {Role::Neutral, 2.0f}, true});
     if (s.phase == Phase::Done && !s.r.bump.singular)
-        scene.segments3.push_back({P, P + L * s.r.bump.perturbed, "n'", {Role::Active, 2.5f}, true});
-    scene.segments3.push_back({P + 1.5 * L * light, P + 0.6 * L * light, "light",
-                               {Role::Construction, 1.5f, true}, true});
+        scene.segments3.push_back(
+            {P, P + L * s.r.bump.perturbed, "n'", {Role::Active, 2.5f}, true});
+    scene.segments3.push_back({P + 1.5 * L * light,
+                               P + 0.6 * L * light,
+                               "light",
+                               {Role::Construction, 1.5f, true},
+                               true});
     scene.extent3 = 0.8 * glm::length(offset) + L;
 
     // 2D: B(u, v₀) across the patch, scaled to the plot's width.
@@ -278,8 +286,9 @@ void BumpMap::draw(const State& s, Scene& scene) {
     std::vector<dvec2> curve;
     double b_max = 1e-300;
     for (int i = 0; i <= kSamples; ++i)
-        b_max = std::max(b_max, std::fabs(height_at(h, s.perlin,
-                                                    {lo.x + (hi.x - lo.x) * i / kSamples, frame.uv.y})));
+        b_max = std::max(
+            b_max,
+            std::fabs(height_at(h, s.perlin, {lo.x + (hi.x - lo.x) * i / kSamples, frame.uv.y})));
     const double scale = 0.35 * (hi.x - lo.x) / b_max;
     for (int i = 0; i <= kSamples; ++i) {
         const double u = lo.x + (hi.x - lo.x) * i / kSamples;

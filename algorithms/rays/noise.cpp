@@ -112,7 +112,8 @@ NoiseDetail perlin_detail(const Perlin& n, dvec3 p) {
 double turbulence(const Perlin& n, dvec3 p, int octaves) {
     double sum = 0;
     for (int k = 0; k < octaves; ++k)
-        sum += std::fabs(noise_impl<false>(n, std::ldexp(1.0, k) * p, nullptr)) / std::ldexp(1.0, k);
+        sum +=
+            std::fabs(noise_impl<false>(n, std::ldexp(1.0, k) * p, nullptr)) / std::ldexp(1.0, k);
     return sum;
 }
 
@@ -146,8 +147,8 @@ void validate_solid(const SolidTexture& t, const std::string& field) {
     auto length = [&](double v, const char* key, const char* what) {
         if (!(v >= 1e-9 && v <= 1e12))
             throw InputError(field + "." + key, std::string("must be a length between 1e-9 and "
-                                                            "1e12: ") + what + " (got " + num(v) +
-                                                    ")");
+                                                            "1e12: ") +
+                                                    what + " (got " + num(v) + ")");
     };
     switch (t.kind) {
         case SolidKind::Checker:
@@ -161,15 +162,17 @@ void validate_solid(const SolidTexture& t, const std::string& field) {
     length(t.period, "period", "the distance from one stripe or ring to the next");
     const double m = std::max({std::fabs(t.axis.x), std::fabs(t.axis.y), std::fabs(t.axis.z)});
     if (!(m >= 1e-150) || !std::isfinite(m))
-        throw InputError(field + ".axis", "must be a nonzero finite direction (got " +
-                                              num(t.axis) + ")");
+        throw InputError(field + ".axis",
+                         "must be a nonzero finite direction (got " + num(t.axis) + ")");
     if (!uses_noise(t.kind)) return;
     if (!(std::fabs(t.amplitude) <= 1e6))
-        throw InputError(field + ".amplitude",
-                         "must be a number of magnitude at most 1e6 (got " + num(t.amplitude) + ")");
+        throw InputError(field + ".amplitude", "must be a number of magnitude at most 1e6 (got " +
+                                                   num(t.amplitude) + ")");
     if (!(t.frequency > 1e-9 && t.frequency <= 1e6))
-        throw InputError(field + ".frequency", "must be between 1e-9 and 1e6 lattice cells per "
-                                               "unit (got " + num(t.frequency) + ")");
+        throw InputError(field + ".frequency",
+                         "must be between 1e-9 and 1e6 lattice cells per "
+                         "unit (got " +
+                             num(t.frequency) + ")");
     if (t.kind == SolidKind::Marble && (t.octaves < 1 || t.octaves > kMaxOctaves))
         throw InputError(field + ".octaves", "must be between 1 and " +
                                                  std::to_string(kMaxOctaves) + " (got " +
@@ -202,8 +205,8 @@ SolidSample solid_sample(const SolidTexture& t, const Perlin& perlin, dvec3 p) {
         }
         case SolidKind::Marble:
             s.noise = turbulence(perlin, t.frequency * p, t.octaves);
-            s.t = 0.5 * (1 + std::sin(kTwoPi * glm::dot(p, s.axis) / t.period +
-                                      t.amplitude * s.noise));
+            s.t = 0.5 *
+                  (1 + std::sin(kTwoPi * glm::dot(p, s.axis) / t.period + t.amplitude * s.noise));
             break;
     }
     if (uses_noise(t.kind)) {

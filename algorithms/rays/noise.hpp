@@ -73,13 +73,13 @@ const char* solid_kind_id(SolidKind k);  // "checker", "stripes", "wood", "marbl
 struct SolidTexture {
     SolidKind kind = SolidKind::Marble;
     std::array<glm::dvec3, 2> colors{glm::dvec3(0.9, 0.9, 0.88), glm::dvec3(0.25, 0.22, 0.3)};
-    double size = 1;                 // checker: the cube's side
-    glm::dvec3 axis{0, 0, 1};        // stripes, wood, marble (any length > 0)
-    double period = 1;               // stripes, wood, marble
-    double amplitude = 4;            // wood, marble: how much the noise bends the pattern
-    double frequency = 1;            // wood, marble: the noise's scale, lattice cells per unit
-    int octaves = 4;                 // marble: turbulence octaves
-    std::uint64_t seed = 0;          // wood, marble: which noise
+    double size = 1;           // checker: the cube's side
+    glm::dvec3 axis{0, 0, 1};  // stripes, wood, marble (any length > 0)
+    double period = 1;         // stripes, wood, marble
+    double amplitude = 4;      // wood, marble: how much the noise bends the pattern
+    double frequency = 1;      // wood, marble: the noise's scale, lattice cells per unit
+    int octaves = 4;           // marble: turbulence octaves
+    std::uint64_t seed = 0;    // wood, marble: which noise
     bool operator==(const SolidTexture&) const = default;
 };
 bool uses_noise(SolidKind k);  // wood, marble
@@ -88,10 +88,10 @@ void validate_solid(const SolidTexture& t, const std::string& field);
 
 struct SolidSample {
     glm::dvec3 color{0.0};
-    double t = 0;          // the mix between c0 and c1 (checker: 0 or 1)
-    double noise = 0;      // wood: the noise; marble: the turbulence (0 for the others)
-    glm::dvec3 axis{0.0};  // unit axis
-    bool cell_known = false;                 // wood, marble: the noise cell ⌊f p⌋; checker ⌊p/s⌋
+    double t = 0;             // the mix between c0 and c1 (checker: 0 or 1)
+    double noise = 0;         // wood: the noise; marble: the turbulence (0 for the others)
+    glm::dvec3 axis{0.0};     // unit axis
+    bool cell_known = false;  // wood, marble: the noise cell ⌊f p⌋; checker ⌊p/s⌋
     std::array<long long, 3> cell{0, 0, 0};
     bool operator==(const SolidSample&) const = default;
 };

@@ -92,7 +92,8 @@ PreparedTextures prepare_textures(const Scene& s) {
         if (t.has_texture && t.texture.filter == TexFilter::Mipmap)
             p.mipmaps[i] = build_mipmap(t.texture.image);
         if (t.has_solid && uses_noise(t.solid.kind)) p.solid_noise[i] = make_perlin(t.solid.seed);
-        if (t.has_bump && t.bump.kind == HeightKind::Noise) p.bump_noise[i] = make_perlin(t.bump.seed);
+        if (t.has_bump && t.bump.kind == HeightKind::Noise)
+            p.bump_noise[i] = make_perlin(t.bump.seed);
     }
     return p;
 }
@@ -106,8 +107,7 @@ RayDifferential pixel_differential(const View& v, int i, int j) {
 namespace {
 
 // The (u, v) step to where a neighbouring ray meets the hit's tangent plane.
-double uv_step(const PreparedUv& uv, const UvFrame& f, dvec3 P, dvec3 n, dvec3 origin,
-               dvec3 dir) {
+double uv_step(const PreparedUv& uv, const UvFrame& f, dvec3 P, dvec3 n, dvec3 origin, dvec3 dir) {
     const double dn = glm::dot(dir, n);
     const double t = glm::dot(P - origin, n) / dn;
     if (!(std::fabs(dn) > 1e-12 * glm::length(dir)) || !(t > 0) || !std::isfinite(t))
@@ -136,9 +136,8 @@ Surface surface_at(const Scene& s, const Prepared& p, const Hit& h, dvec3 origin
         if (t.texture.filter == TexFilter::Mipmap && diff)
             footprint = std::max(uv_step(uv, frame, h.point, h.normal, origin, diff->dx),
                                  uv_step(uv, frame, h.point, h.normal, origin, diff->dy));
-        const MipMap* mip = t.texture.filter == TexFilter::Mipmap
-                                ? &p.textures.mipmaps[obj.material]
-                                : nullptr;
+        const MipMap* mip =
+            t.texture.filter == TexFilter::Mipmap ? &p.textures.mipmaps[obj.material] : nullptr;
         const TextureLookup look = lookup(t.texture, mip, frame.uv, footprint);
         sf.ka = m.ka * look.color;
         sf.kd = m.kd * look.color;
@@ -163,7 +162,8 @@ Surface surface_at(const Scene& s, const Prepared& p, const Hit& h, dvec3 origin
     }
     if (t.has_bump) {
         const dvec3 outward = h.entering ? h.normal : -h.normal;
-        const BumpResult b = blinn_bump(frame, outward, t.bump, p.textures.bump_noise[obj.material]);
+        const BumpResult b =
+            blinn_bump(frame, outward, t.bump, p.textures.bump_noise[obj.material]);
         sf.normal = h.entering ? b.perturbed : -b.perturbed;
         if (detail) {
             detail->bumped = true;

@@ -48,10 +48,10 @@ struct MaterialTextures {
 };
 
 struct ObjectUv {
-    bool has_u_axis = false;         // a plane's u axis (default: default_u_axis(normal))
+    bool has_u_axis = false;  // a plane's u axis (default: default_u_axis(normal))
     glm::dvec3 u_axis{1, 0, 0};
-    double scale = 1;                // a plane's uv_scale
-    bool has_uv = false;             // a triangle's corner (u, v) (default (0,0), (1,0), (0,1))
+    double scale = 1;     // a plane's uv_scale
+    bool has_uv = false;  // a triangle's corner (u, v) (default (0,0), (1,0), (0,1))
     std::array<glm::dvec2, 3> uv{glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(0, 1)};
     bool operator==(const ObjectUv&) const = default;
 };
@@ -109,7 +109,7 @@ PreparedTextures prepare_textures(const Scene& s);
 RayDifferential pixel_differential(const View& v, int i, int j);
 // The hit's surface: k_a, k_d and the normal, textured and bumped as its material says (the
 // material's own when it has no textures). `diff` is the primary ray's differential (or null).
-Surface surface_at(const Scene& s, const Prepared& p, const Hit& h, glm::dvec3 origin,
-                   glm::dvec3 d, const RayDifferential* diff, SurfaceDetail* detail = nullptr);
+Surface surface_at(const Scene& s, const Prepared& p, const Hit& h, glm::dvec3 origin, glm::dvec3 d,
+                   const RayDifferential* diff, SurfaceDetail* detail = nullptr);
 
 }  // namespace cg::rt

@@ -15,15 +15,23 @@ using glm::dvec3;
 using Phase = SolidTextureAlgo::Phase;
 
 namespace {
-enum Line { kLinePoint = 1, kLineLattice, kLineGradients, kLineFade, kLineInterpolate,
-            kLineTurbulence, kLineColour };
+enum Line {
+    kLinePoint = 1,
+    kLineLattice,
+    kLineGradients,
+    kLineFade,
+    kLineInterpolate,
+    kLineTurbulence,
+    kLineColour
+};
 
 bool noisy(const SolidTexture& t) {
     return uses_noise(t.kind);
 }
 
 std::string corner_name(int k) {
-    return std::string("g") + char('0' + (k >> 2)) + char('0' + ((k >> 1) & 1)) + char('0' + (k & 1));
+    return std::string("g") + char('0' + (k >> 2)) + char('0' + ((k >> 1) & 1)) +
+           char('0' + (k & 1));
 }
 }  // namespace
 
@@ -45,11 +53,14 @@ const Spec& SolidTextureAlgo::spec() {
         },
         {
             {"point", "a point's colour from the texture's formula"},
-            {"lattice", "the integer lattice cell holding the noise point, and the point's place in it"},
-            {"gradients", "the pseudo-random gradients at the cell's 8 corners, and their ramps at the point"},
+            {"lattice",
+             "the integer lattice cell holding the noise point, and the point's place in it"},
+            {"gradients",
+             "the pseudo-random gradients at the cell's 8 corners, and their ramps at the point"},
             {"fade", "the fade curve's weights for the three fractions"},
             {"interpolate", "the 8 ramps blended along z, then y, then x: the noise value"},
-            {"turbulence", "the octaves of |noise| summed at doubling frequencies and halving weights"},
+            {"turbulence",
+             "the octaves of |noise| summed at doubling frequencies and halving weights"},
             {"colour", "the worked point's colour from its noise"},
         },
     };
@@ -194,11 +205,11 @@ void SolidTextureAlgo::narrate(const State& s, StepInfo& info) {
             const SolidSample& ss = s.r.samples[i];
             info.event = s.last == Phase::Point ? "point" : "colour";
             info.line = s.last == Phase::Point ? kLinePoint : kLineColour;
-            info.narration = "Point " + std::to_string(i) + " " + num(p, 4) + ", " + formula_text(t) +
-                             (noisy(t) ? ": noise " + num(ss.noise, 5) : "") + ": t = " +
-                             num(ss.t, 5) + ", colour " + num(ss.color, 4) + ".";
-            info.math = "(1 - " + tex(ss.t, 4) + ")\\,c_0 + " + tex(ss.t, 4) + "\\,c_1 = " +
-                        tex(ss.color, 4);
+            info.narration = "Point " + std::to_string(i) + " " + num(p, 4) + ", " +
+                             formula_text(t) + (noisy(t) ? ": noise " + num(ss.noise, 5) : "") +
+                             ": t = " + num(ss.t, 5) + ", colour " + num(ss.color, 4) + ".";
+            info.math = "(1 - " + tex(ss.t, 4) + ")\\,c_0 + " + tex(ss.t, 4) +
+                        "\\,c_1 = " + tex(ss.color, 4);
             break;
         }
         case Phase::Lattice:
@@ -227,9 +238,9 @@ void SolidTextureAlgo::narrate(const State& s, StepInfo& info) {
             info.event = "fade";
             info.line = kLineFade;
             info.narration = "Fade weights f(t) = 6t⁵ − 15t⁴ + 10t³: u = f(" + num(d.frac.x, 4) +
-                             ") = " + num(d.fade.x, 5) + ", v = f(" + num(d.frac.y, 4) + ") = " +
-                             num(d.fade.y, 5) + ", w = f(" + num(d.frac.z, 4) + ") = " +
-                             num(d.fade.z, 5) +
+                             ") = " + num(d.fade.x, 5) + ", v = f(" + num(d.frac.y, 4) +
+                             ") = " + num(d.fade.y, 5) + ", w = f(" + num(d.frac.z, 4) +
+                             ") = " + num(d.fade.z, 5) +
                              " (f' and f'' vanish at 0 and 1: no creases at the cell's faces).";
             info.math = "f(t) = 6t^5 - 15t^4 + 10t^3:\\; (u, v, w) = " + tex(d.fade, 5);
             break;
@@ -238,8 +249,9 @@ void SolidTextureAlgo::narrate(const State& s, StepInfo& info) {
             info.line = kLineInterpolate;
             info.narration = "Along z by w: " + num(d.along_z[0], 4) + ", " + num(d.along_z[1], 4) +
                              ", " + num(d.along_z[2], 4) + ", " + num(d.along_z[3], 4) +
-                             "; along y by v: " + num(d.along_y[0], 4) + ", " + num(d.along_y[1], 4) +
-                             "; along x by u: noise = " + num(d.value, 6) + ".";
+                             "; along y by v: " + num(d.along_y[0], 4) + ", " +
+                             num(d.along_y[1], 4) + "; along x by u: noise = " + num(d.value, 6) +
+                             ".";
             info.math = "\\mathrm{noise}(q) = \\mathrm{lerp}(" + tex(d.along_y[0], 4) + ", " +
                         tex(d.along_y[1], 4) + ", " + tex(d.fade.x, 4) + ") = " + tex(d.value, 6);
             break;
@@ -263,9 +275,10 @@ void SolidTextureAlgo::narrate(const State& s, StepInfo& info) {
     info.vars = {{"point", static_cast<long long>(i)}, {"p", vec(p)}};
     if (s.r.has_detail && i == static_cast<std::size_t>(in.detail)) {
         info.vars.push_back({"q", vec(d.p)});
-        info.vars.push_back({"cell", std::vector<double>{double(d.cell[0]), double(d.cell[1]),
-                                                         double(d.cell[2])}});
-        if (s.last >= Phase::Fade || s.last == Phase::Colour) info.vars.push_back({"fade", vec(d.fade)});
+        info.vars.push_back(
+            {"cell", std::vector<double>{double(d.cell[0]), double(d.cell[1]), double(d.cell[2])}});
+        if (s.last >= Phase::Fade || s.last == Phase::Colour)
+            info.vars.push_back({"fade", vec(d.fade)});
         if (s.last >= Phase::Interpolate || s.last == Phase::Colour)
             info.vars.push_back({"noise", d.value});
     }
@@ -284,11 +297,11 @@ void SolidTextureAlgo::draw(const State& s, Scene& scene) {
     double extent = 1;
     for (std::size_t i = 0; i < in.points.size() && i < 4000; ++i) {
         const bool known = i < s.r.samples.size();
-        scene.points3.push_back(
-            {in.points[i], "",
-             {Role::Subject, 1.0f, false,
-              known ? texdraw::rgba(s.r.samples[i].color) : 0x80808060u},
-             known ? 6.0f : 3.0f});
+        scene.points3.push_back({in.points[i],
+                                 "",
+                                 {Role::Subject, 1.0f, false,
+                                  known ? texdraw::rgba(s.r.samples[i].color) : 0x80808060u},
+                                 known ? 6.0f : 3.0f});
         extent = std::max(extent, glm::length(in.points[i]));
     }
     const bool working = s.r.has_detail && (s.last >= Phase::Lattice && s.last <= Phase::Colour) &&
@@ -309,9 +322,11 @@ void SolidTextureAlgo::draw(const State& s, Scene& scene) {
         const auto& G = perlin_gradients();
         for (int k = 0; k < 8; ++k) {
             const dvec3 c = c0 + dvec3((k >> 2) & 1, (k >> 1) & 1, k & 1);
-            scene.segments3.push_back({world(c), world(c + 0.35 * G[d.gradient[k]]),
+            scene.segments3.push_back({world(c),
+                                       world(c + 0.35 * G[d.gradient[k]]),
                                        s.last >= Phase::Gradients ? corner_name(k) : "",
-                                       {Role::Entering, 2.0f}, true});
+                                       {Role::Entering, 2.0f},
+                                       true});
         }
         scene.points3.push_back({in.points[in.detail], "p", {Role::Active}, 7.0f});
         scene.extent3 = 1.2 * std::max(glm::length(world(c0)), glm::length(world(c0 + dvec3(1.0))));
@@ -329,7 +344,8 @@ void SolidTextureAlgo::draw(const State& s, Scene& scene) {
     scene.polygons.push_back({cubic, {Role::Construction, 1.0f, true}, false, false});
     scene.segments.push_back({{0, 0}, {1.1, 0}, "t", {Role::Neutral, 1.0f}, true});
     scene.segments.push_back({{0, 0}, {0, 1.1}, "f(t)", {Role::Neutral, 1.0f}, true});
-    scene.labels.push_back({{0.02, 1.15}, "fade 6t⁵ − 15t⁴ + 10t³ (dashed: 3t² − 2t³)", {Role::Neutral}});
+    scene.labels.push_back(
+        {{0.02, 1.15}, "fade 6t⁵ − 15t⁴ + 10t³ (dashed: 3t² − 2t³)", {Role::Neutral}});
     if (working && s.last >= Phase::Fade) {
         const NoiseDetail& d = s.r.detail;
         const char* names[] = {"x", "y", "z"};

@@ -34,12 +34,20 @@ struct SolidTextureAlgo {
         bool noisy = false;                // wood, marble
         bool has_detail = false;           // a noisy texture: the detail point's noise
         NoiseDetail detail;
-        std::vector<double> octaves;       // marble: |noise(2^k f p)| / 2^k of the detail point
+        std::vector<double> octaves;  // marble: |noise(2^k f p)| / 2^k of the detail point
         bool operator==(const Result&) const = default;
     };
 
-    enum class Phase : std::uint8_t { Point, Lattice, Gradients, Fade, Interpolate, Turbulence,
-                                      Colour, Done };
+    enum class Phase : std::uint8_t {
+        Point,
+        Lattice,
+        Gradients,
+        Fade,
+        Interpolate,
+        Turbulence,
+        Colour,
+        Done
+    };
 
     struct State {
         Shared<Input> in;

@@ -65,9 +65,11 @@ std::string SolidTextureAlgo::question(const Input& in) {
     const SolidTexture& t = in.texture;
     const glm::dvec3 p = in.points[0];
     if (t.kind == SolidKind::Checker)
-        return "A 3D checker of cube size " + num(t.size) + " is white (c₀) where ⌊x/s⌋ + ⌊y/s⌋ + "
+        return "A 3D checker of cube size " + num(t.size) +
+               " is white (c₀) where ⌊x/s⌋ + ⌊y/s⌋ + "
                "⌊z/s⌋ is even and black (c₁) where it is odd. Give the cube (cells) and the colour "
-               "(colors) at P = " + num(p) + " (noise: none, null).";
+               "(colors) at P = " +
+               num(p) + " (noise: none, null).";
     const Perlin perlin = make_perlin(t.seed);
     const glm::dvec3 q = t.frequency * p;
     const glm::dvec3 c = glm::floor(q);
@@ -76,9 +78,9 @@ std::string SolidTextureAlgo::question(const Input& in) {
         const long long X = static_cast<long long>(c.x) + ((k >> 2) & 1),
                         Y = static_cast<long long>(c.y) + ((k >> 1) & 1),
                         Z = static_cast<long long>(c.z) + (k & 1);
-        grads += (k ? ", " : "") + std::string("(") + std::to_string(X) + ", " +
-                 std::to_string(Y) + ", " + std::to_string(Z) + "): " +
-                 num(perlin_gradients()[gradient_index(perlin, X, Y, Z)]);
+        grads += (k ? ", " : "") + std::string("(") + std::to_string(X) + ", " + std::to_string(Y) +
+                 ", " + std::to_string(Z) +
+                 "): " + num(perlin_gradients()[gradient_index(perlin, X, Y, Z)]);
     }
     std::string s = "Perlin noise at P = " + num(p) +
                     " with the fade 6t⁵ − 15t⁴ + 10t³ and the corner gradients " + grads +

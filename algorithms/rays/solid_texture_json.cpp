@@ -32,9 +32,10 @@ struct JsonIo<SolidTextureAlgo> {
         if (r.has("detail")) {
             const long long d = r.integer("detail");
             if (d < 0 || d >= static_cast<long long>(std::max<std::size_t>(in.points.size(), 1)))
-                throw InputError("detail", "must be the index of a point, 0 to " +
-                                               std::to_string(in.points.size() ? in.points.size() - 1 : 0) +
-                                               " (got " + std::to_string(d) + ")");
+                throw InputError("detail",
+                                 "must be the index of a point, 0 to " +
+                                     std::to_string(in.points.size() ? in.points.size() - 1 : 0) +
+                                     " (got " + std::to_string(d) + ")");
             in.detail = static_cast<int>(d);
         }
         return in;
@@ -68,15 +69,16 @@ struct JsonIo<SolidTextureAlgo> {
                 g.push_back(to_json(perlin_gradients()[d.gradient[k]]));
                 ramps.push_back(d.dot[k]);
             }
-            j["detail"] = json{{"q", to_json(d.p)},
-                               {"cell", {d.cell[0], d.cell[1], d.cell[2]}},
-                               {"frac", to_json(d.frac)},
-                               {"fade", to_json(d.fade)},
-                               {"gradients", std::move(g)},
-                               {"ramps", std::move(ramps)},
-                               {"along_z", {d.along_z[0], d.along_z[1], d.along_z[2], d.along_z[3]}},
-                               {"along_y", {d.along_y[0], d.along_y[1]}},
-                               {"value", d.value}};
+            j["detail"] =
+                json{{"q", to_json(d.p)},
+                     {"cell", {d.cell[0], d.cell[1], d.cell[2]}},
+                     {"frac", to_json(d.frac)},
+                     {"fade", to_json(d.fade)},
+                     {"gradients", std::move(g)},
+                     {"ramps", std::move(ramps)},
+                     {"along_z", {d.along_z[0], d.along_z[1], d.along_z[2], d.along_z[3]}},
+                     {"along_y", {d.along_y[0], d.along_y[1]}},
+                     {"value", d.value}};
         }
         if (!r.octaves.empty()) j["octaves"] = r.octaves;
         return j;

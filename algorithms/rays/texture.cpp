@@ -56,8 +56,7 @@ void validate_image(const TextureImage& im, const std::string& field) {
                                     "×" + std::to_string(im.height) + ")");
     if (im.width > kMaxTextureSide || im.height > kMaxTextureSide ||
         static_cast<long long>(im.width) * im.height > kMaxTexels)
-        throw InputError(field, "is " + std::to_string(im.width) + "×" +
-                                    std::to_string(im.height) +
+        throw InputError(field, "is " + std::to_string(im.width) + "×" + std::to_string(im.height) +
                                     " texels; the limit is 4096 on a side and 2048 × 2048 in all");
     if (im.texels.size() != static_cast<std::size_t>(im.width) * im.height)
         throw InputError(field, "has " + std::to_string(im.texels.size()) + " texels for " +
@@ -68,18 +67,19 @@ void validate_image(const TextureImage& im, const std::string& field) {
                 throw InputError(field, "texel (" + std::to_string(k % im.width) + ", " +
                                             std::to_string(k / im.width) +
                                             ") must be a colour with components in [0, 1e6] "
-                                            "(got " + num(im.texels[k], 6) + ")");
+                                            "(got " +
+                                            num(im.texels[k], 6) + ")");
 }
 
 void validate_texture(const Texture& t, const std::string& field) {
     validate_image(t.image, field);
-    if (t.filter == TexFilter::Mipmap && !(power_of_two(t.image.width) &&
-                                           power_of_two(t.image.height)))
+    if (t.filter == TexFilter::Mipmap &&
+        !(power_of_two(t.image.width) && power_of_two(t.image.height)))
         throw InputError(field + ".filter",
                          "\"mipmap\" needs a width and height that are powers of two, so that "
                          "each level halves the one before (the image is " +
-                             std::to_string(t.image.width) + "×" +
-                             std::to_string(t.image.height) + ")");
+                             std::to_string(t.image.width) + "×" + std::to_string(t.image.height) +
+                             ")");
 }
 
 // ---- [mipmap] -------------------------------------------------------------------------------
@@ -160,7 +160,7 @@ TexelTaps sample_bilinear(const TextureImage& im, dvec2 st, TexWrap wrap) {
 
 double mip_lambda(int width, int height, double footprint, int levels) {
     const double rho = footprint * std::max(width, height);  // texels under the footprint
-    if (!(rho > 1)) return 0;                                 // magnified: the finest level
+    if (!(rho > 1)) return 0;                                // magnified: the finest level
     return std::min(std::log2(rho), static_cast<double>(levels - 1));
 }
 

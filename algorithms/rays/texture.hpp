@@ -115,10 +115,10 @@ struct TextureLookup {
     glm::dvec2 st{0.0};  // wrapped
     TexelTaps taps;      // nearest / bilinear, or the finer mipmap level's bilinear taps
     // mipmap only:
-    double lambda = 0;          // the level of detail
+    double lambda = 0;           // the level of detail
     int level0 = 0, level1 = 0;  // the two levels read (equal when λ is whole or at an end)
-    double blend = 0;           // λ − level0: the share of level1
-    TexelTaps coarse;           // level1's taps
+    double blend = 0;            // λ − level0: the share of level1
+    TexelTaps coarse;            // level1's taps
     TexColor color{0.0};
     bool operator==(const TextureLookup&) const = default;
 };

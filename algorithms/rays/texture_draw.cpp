@@ -87,8 +87,7 @@ void add_surface(const PreparedUv& p, const UvSurface& s, dvec2 lo, dvec2 hi, in
         const int n = nu;
         auto corner = [&](int a, int b) {
             const double beta = double(a) / n, gamma = double(b) / n;
-            return std::pair{p.p0 + beta * p.e1 + gamma * p.e2,
-                             p.uv0 + beta * p.j1 + gamma * p.j2};
+            return std::pair{p.p0 + beta * p.e1 + gamma * p.e2, p.uv0 + beta * p.j1 + gamma * p.j2};
         };
         for (int a = 0; a < n; ++a)
             for (int b = 0; a + b < n; ++b)
@@ -97,26 +96,30 @@ void add_surface(const PreparedUv& p, const UvSurface& s, dvec2 lo, dvec2 hi, in
                     const auto c1 = corner(a + 1, b), c2 = corner(a, b + 1);
                     const dvec2 uv = (c0.second + c1.second + c2.second) / 3.0;
                     const dvec3 P = (c0.first + c1.first + c2.first) / 3.0;
-                    scene.faces3.push_back({{c0.first + offset, c1.first + offset, c2.first + offset},
-                                            {Role::Subject, 1.0f, false, rgba(color(uv, P), 1)},
-                                            alpha,
-                                            false,
-                                            true});
+                    scene.faces3.push_back(
+                        {{c0.first + offset, c1.first + offset, c2.first + offset},
+                         {Role::Subject, 1.0f, false, rgba(color(uv, P), 1)},
+                         alpha,
+                         false,
+                         true});
                 }
         return;
     }
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {
-            const double u0 = lo.x + (hi.x - lo.x) * i / nu, u1 = lo.x + (hi.x - lo.x) * (i + 1) / nu;
-            const double v0 = lo.y + (hi.y - lo.y) * j / nv, v1 = lo.y + (hi.y - lo.y) * (j + 1) / nv;
+            const double u0 = lo.x + (hi.x - lo.x) * i / nu,
+                         u1 = lo.x + (hi.x - lo.x) * (i + 1) / nu;
+            const double v0 = lo.y + (hi.y - lo.y) * j / nv,
+                         v1 = lo.y + (hi.y - lo.y) * (j + 1) / nv;
             const dvec2 mid{(u0 + u1) / 2, (v0 + v1) / 2};
             const dvec3 P = uv_point(p, mid);
-            scene.faces3.push_back({{uv_point(p, {u0, v0}) + offset, uv_point(p, {u1, v0}) + offset,
-                                     uv_point(p, {u1, v1}) + offset, uv_point(p, {u0, v1}) + offset},
-                                    {Role::Subject, 1.0f, false, rgba(color(mid, P), 1)},
-                                    alpha,
-                                    false,
-                                    true});
+            scene.faces3.push_back(
+                {{uv_point(p, {u0, v0}) + offset, uv_point(p, {u1, v0}) + offset,
+                  uv_point(p, {u1, v1}) + offset, uv_point(p, {u0, v1}) + offset},
+                 {Role::Subject, 1.0f, false, rgba(color(mid, P), 1)},
+                 alpha,
+                 false,
+                 true});
         }
 }
 

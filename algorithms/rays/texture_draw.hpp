@@ -31,8 +31,8 @@ void add_surface(const PreparedUv& p, const UvSurface& s, glm::dvec2 lo, glm::dv
                  int nv, const std::function<glm::dvec3(glm::dvec2 uv, glm::dvec3 P)>& color,
                  glm::dvec3 offset, float alpha, Scene& scene);
 // The surface painted with the texture (nearest lookups of level 0).
-void add_textured_surface(const PreparedUv& p, const UvSurface& s, glm::dvec2 uv,
-                          const Texture& t, const void* unused, Scene& scene);
+void add_textured_surface(const PreparedUv& p, const UvSurface& s, glm::dvec2 uv, const Texture& t,
+                          const void* unused, Scene& scene);
 // The point, and (with a frame) the u and v directions there; `color` ≥ 0 labels the colour.
 void add_point_frame(const PreparedUv& p, glm::dvec3 P, const UvFrame* frame, glm::dvec3 color,
                      Scene& scene);

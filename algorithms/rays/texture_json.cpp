@@ -1,13 +1,14 @@
 // Sections: [image files] [textures] [heights] [solid textures] [surfaces] [paths]
 #include "rays/texture_json.hpp"
 
+#include <stb_image.h>  // the implementation is in libstb
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <stb_image.h>  // the implementation is in libstb
 
 #include "rays/rays_json.hpp"
 
@@ -67,8 +68,7 @@ TextureImage read_image_file(const std::string& path, const std::string& field) 
     }
     unsigned char* data = stbi_load_from_file(f, &w, &h, &n, 3);
     std::fclose(f);
-    if (!data)
-        throw InputError(field, "cannot read \"" + path + "\": " + stbi_failure_reason());
+    if (!data) throw InputError(field, "cannot read \"" + path + "\": " + stbi_failure_reason());
     TextureImage im;
     im.width = w;
     im.height = h;
@@ -88,8 +88,9 @@ TextureImage read_image_file(const std::string& path, const std::string& field) 
 void image_source(const Reader& r, Texture& t) {
     const int given = r.has("image") + r.has("grid") + r.has("checker");
     if (given != 1)
-        throw InputError(r.path(), "needs exactly one of \"image\" (a file), \"grid\" (texels "
-                                   "inline) and \"checker\"");
+        throw InputError(r.path(),
+                         "needs exactly one of \"image\" (a file), \"grid\" (texels "
+                         "inline) and \"checker\"");
     if (r.has("image")) {
         t.source = r.string("image");
         if (t.source.empty()) throw InputError(r.field("image"), "must name an image file");
@@ -125,7 +126,8 @@ void image_source(const Reader& r, Texture& t) {
             const json& v = c.get("size");
             if (v.is_array()) {
                 if (v.size() != 2)
-                    throw InputError(c.field("size"), "must be n or [n_u, n_v], got " + describe(v));
+                    throw InputError(c.field("size"),
+                                     "must be n or [n_u, n_v], got " + describe(v));
                 for (int k = 0; k < 2; ++k) {
                     const double x = as_number(v[k], at(c.field("size"), k));
                     if (x != std::floor(x) || x < 1 || x > kMaxTextureSide)
@@ -141,7 +143,8 @@ void image_source(const Reader& r, Texture& t) {
         if (c.has("colors")) {
             const json& v = c.get("colors");
             if (!v.is_array() || v.size() != 2)
-                throw InputError(c.field("colors"), "must be two colours [c0, c1], got " + describe(v));
+                throw InputError(c.field("colors"),
+                                 "must be two colours [c0, c1], got " + describe(v));
             for (int k = 0; k < 2; ++k) colors[k] = colour_value(v[k], at(c.field("colors"), k));
         }
         if (static_cast<long long>(n.x) * n.y > kMaxTexels)
@@ -158,17 +161,18 @@ void image_source(const Reader& r, Texture& t) {
         else if (w == "clamp")
             t.wrap = TexWrap::Clamp;
         else
-            throw InputError(r.field("wrap"), "must be \"repeat\" or \"clamp\" (got \"" + w + "\")");
+            throw InputError(r.field("wrap"),
+                             "must be \"repeat\" or \"clamp\" (got \"" + w + "\")");
     }
 }
 
 Texture texture(const Reader& r, std::initializer_list<const char*> extra) {
     for (auto it = r.value().begin(); it != r.value().end(); ++it) {
         static const char* known[] = {"image", "grid", "checker", "filter", "wrap"};
-        bool ok = std::any_of(std::begin(known), std::end(known),
-                              [&](const char* k) { return it.key() == k; }) ||
-                  std::any_of(extra.begin(), extra.end(),
-                              [&](const char* k) { return it.key() == k; });
+        bool ok =
+            std::any_of(std::begin(known), std::end(known),
+                        [&](const char* k) { return it.key() == k; }) ||
+            std::any_of(extra.begin(), extra.end(), [&](const char* k) { return it.key() == k; });
         if (!ok)
             throw InputError(r.field(it.key().c_str()),
                              "is not a field of a texture (image, grid, checker, filter, wrap)");
@@ -192,8 +196,9 @@ Texture texture(const Reader& r, std::initializer_list<const char*> extra) {
 
 void image_source_json(const Texture& t, json& j) {
     if (t.source == "checker") {
-        j["checker"] = json{{"size", {t.checker_size.x, t.checker_size.y}},
-                            {"colors", {nice_point(t.checker_colors[0]), nice_point(t.checker_colors[1])}}};
+        j["checker"] =
+            json{{"size", {t.checker_size.x, t.checker_size.y}},
+                 {"colors", {nice_point(t.checker_colors[0]), nice_point(t.checker_colors[1])}}};
     } else if (t.source == "grid") {
         json rows = json::array();
         for (int row = t.image.height - 1; row >= 0; --row) {
@@ -229,8 +234,8 @@ glm::dvec2 pair_or_number(const Reader& r, const char* key) {
 std::uint64_t seed_of(const Reader& r) {
     const long long s = r.integer("seed");
     if (s < 0 || s > (1LL << 53))
-        throw InputError(r.field("seed"), "must be a whole number from 0 to 2^53 (got " +
-                                              std::to_string(s) + ")");
+        throw InputError(r.field("seed"),
+                         "must be a whole number from 0 to 2^53 (got " + std::to_string(s) + ")");
     return static_cast<std::uint64_t>(s);
 }
 
@@ -286,11 +291,14 @@ SolidTexture solid(const Reader& r, std::initializer_list<const char*> extra) {
                  : type == "wood"  ? SolidKind::Wood
                                    : SolidKind::Marble;
         allowed.insert(allowed.end(), {"axis", "period"});
-        if (t.kind != SolidKind::Stripes) allowed.insert(allowed.end(), {"amplitude", "frequency", "seed"});
+        if (t.kind != SolidKind::Stripes)
+            allowed.insert(allowed.end(), {"amplitude", "frequency", "seed"});
         if (t.kind == SolidKind::Marble) allowed.push_back("octaves");
     } else {
-        throw InputError(r.field("type"), "must be \"checker\", \"stripes\", \"wood\" or "
-                                          "\"marble\" (got \"" + type + "\")");
+        throw InputError(r.field("type"),
+                         "must be \"checker\", \"stripes\", \"wood\" or "
+                         "\"marble\" (got \"" +
+                             type + "\")");
     }
     allowed.insert(allowed.end(), extra.begin(), extra.end());
     for (auto it = r.value().begin(); it != r.value().end(); ++it)
@@ -362,7 +370,8 @@ UvSurface surface(const Reader& r) {
         s.kind = UvKind::Triangle;
         const std::vector<glm::dvec3> p = r.points3("vertices");
         if (p.size() != 3)
-            throw InputError(r.field("vertices"), "must be 3 points, got " + std::to_string(p.size()));
+            throw InputError(r.field("vertices"),
+                             "must be 3 points, got " + std::to_string(p.size()));
         s.p = {p[0], p[1], p[2]};
         if (r.has("uv")) {
             const std::vector<glm::dvec2> uv = r.points2("uv");

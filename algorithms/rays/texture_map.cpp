@@ -45,10 +45,13 @@ const Spec& TextureMap::spec() {
             "    c ← (1 − (λ − ⌊λ⌋)) c₀ + (λ − ⌊λ⌋) c₁",
         },
         {
-            {"plane-uv", "a plane: u, v are the point's coordinates along the two axes, over the scale"},
+            {"plane-uv",
+             "a plane: u, v are the point's coordinates along the two axes, over the scale"},
             {"sphere-uv", "a sphere or ellipsoid: u from the longitude, v from the latitude"},
-            {"axial-uv", "a cylinder, cone, paraboloid or hyperboloid: u from the angle, v from the height"},
-            {"triangle-uv", "a triangle: the corners' (u, v) interpolated with barycentric weights"},
+            {"axial-uv",
+             "a cylinder, cone, paraboloid or hyperboloid: u from the angle, v from the height"},
+            {"triangle-uv",
+             "a triangle: the corners' (u, v) interpolated with barycentric weights"},
             {"wrap", "(u, v) wrapped into the texture's [0, 1] square"},
             {"nearest", "the texel containing (s, t) gives the colour"},
             {"bilinear", "the four texels around (s, t), weighted by how near their centres are"},
@@ -68,9 +71,9 @@ namespace {
 void check_point(dvec3 v, const std::string& field) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(v[i]) || std::fabs(v[i]) > 1e12)
-            throw InputError(field + "[" + std::to_string(i) + "]",
-                             "must be a finite number of magnitude at most 1e12 (got " +
-                                 num(v[i]) + ")");
+            throw InputError(
+                field + "[" + std::to_string(i) + "]",
+                "must be a finite number of magnitude at most 1e12 (got " + num(v[i]) + ")");
 }
 
 }  // namespace
@@ -207,7 +210,8 @@ std::string texel_text(glm::ivec2 t) {
 std::string taps_text(const TexelTaps& t, const TextureImage& im) {
     std::string s;
     for (int k = 0; k < t.count; ++k)
-        s += (k ? " + " : "") + num(t.weight[k], 4) + "·" + num(im.at(t.texel[k].x, t.texel[k].y), 3);
+        s += (k ? " + " : "") + num(t.weight[k], 4) + "·" +
+             num(im.at(t.texel[k].x, t.texel[k].y), 3);
     return s;
 }
 
@@ -220,10 +224,10 @@ void narrate_map(const TextureMap::State& s, StepInfo& info) {
         case UvKind::Plane: {
             info.event = "plane-uv";
             const dvec3 d = P - s.prepared.origin;
-            info.narration = "On the plane: P − O = " + num(d, 4) + "; u = (P − O)·a/s = " +
-                             num(f.uv.x, 6) + ", v = (P − O)·b/s = " + num(f.uv.y, 6) +
-                             " with a = " + num(s.prepared.a, 4) + ", b = n × a = " +
-                             num(s.prepared.b, 4) + ", s = " + num(s.prepared.scale) + ".";
+            info.narration =
+                "On the plane: P − O = " + num(d, 4) + "; u = (P − O)·a/s = " + num(f.uv.x, 6) +
+                ", v = (P − O)·b/s = " + num(f.uv.y, 6) + " with a = " + num(s.prepared.a, 4) +
+                ", b = n × a = " + num(s.prepared.b, 4) + ", s = " + num(s.prepared.scale) + ".";
             info.math = "u = \\frac{(P - O) \\cdot a}{s} = " + tex(f.uv.x) +
                         ",\\quad v = \\frac{(P - O) \\cdot b}{s} = " + tex(f.uv.y);
             return;
@@ -247,25 +251,26 @@ void narrate_map(const TextureMap::State& s, StepInfo& info) {
     if (sf.quadric.kind == QuadricKind::Sphere || sf.quadric.kind == QuadricKind::Ellipsoid) {
         info.event = "sphere-uv";
         const double theta_deg = f.theta * 180 / 3.14159265358979323846;
-        info.narration = "Longitude φ = atan2(y, x) = " + num(phi_deg, 5) + "°, polar angle θ = " +
-                         "acos(z/r) = " + num(theta_deg, 5) + "°" + model + ": u = ½ + φ/(2π) = " +
-                         num(f.uv.x, 6) + ", v = 1 − θ/π = " + num(f.uv.y, 6) + "." +
-                         (f.singular ? " P is a pole: every u names it (u is undefined there)."
-                                     : "");
-        info.math = "u = \\frac{1}{2} + \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = " +
-                    tex(f.uv.x) + ",\\quad v = 1 - \\frac{\\arccos(z/r)}{\\pi} = " + tex(f.uv.y);
+        info.narration =
+            "Longitude φ = atan2(y, x) = " + num(phi_deg, 5) +
+            "°, polar angle θ = " + "acos(z/r) = " + num(theta_deg, 5) + "°" + model +
+            ": u = ½ + φ/(2π) = " + num(f.uv.x, 6) + ", v = 1 − θ/π = " + num(f.uv.y, 6) + "." +
+            (f.singular ? " P is a pole: every u names it (u is undefined there)." : "");
+        info.math =
+            "u = \\frac{1}{2} + \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = " + tex(f.uv.x) +
+            ",\\quad v = 1 - \\frac{\\arccos(z/r)}{\\pi} = " + tex(f.uv.y);
         return;
     }
     info.event = "axial-uv";
     const bool cut = std::isfinite(sf.quadric.zmin) && std::isfinite(sf.quadric.zmax);
     info.narration = "Angle around the axis φ = atan2(y, x) = " + num(phi_deg, 5) + "°" + model +
                      ": u = ½ + φ/(2π) = " + num(f.uv.x, 6) + "; height " +
-                     (cut ? "v = (z − zmin)/(zmax − zmin) = " : "v = z = ") + num(f.uv.y, 6) +
-                     "." + (f.singular ? " P is the apex: every u names it." : "");
-    info.math = "u = \\frac{1}{2} + \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = " + tex(f.uv.x) +
-                (cut ? ",\\quad v = \\frac{z - z_{min}}{z_{max} - z_{min}} = "
-                     : ",\\quad v = z = ") +
-                tex(f.uv.y);
+                     (cut ? "v = (z − zmin)/(zmax − zmin) = " : "v = z = ") + num(f.uv.y, 6) + "." +
+                     (f.singular ? " P is the apex: every u names it." : "");
+    info.math =
+        "u = \\frac{1}{2} + \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = " + tex(f.uv.x) +
+        (cut ? ",\\quad v = \\frac{z - z_{min}}{z_{max} - z_{min}} = " : ",\\quad v = z = ") +
+        tex(f.uv.y);
 }
 
 }  // namespace
@@ -283,10 +288,10 @@ void TextureMap::narrate(const State& s, StepInfo& info) {
         case Phase::Wrap:
             info.event = "wrap";
             info.line = kLineWrap;
-            info.narration = std::string(t.wrap == TexWrap::Repeat
-                                             ? "Repeat: the fractional parts, "
-                                             : "Clamp to [0, 1]: ") +
-                             "(s, t) = " + num(l.st, 6) + " on the " + size + " " + t.source + ".";
+            info.narration =
+                std::string(t.wrap == TexWrap::Repeat ? "Repeat: the fractional parts, "
+                                                      : "Clamp to [0, 1]: ") +
+                "(s, t) = " + num(l.st, 6) + " on the " + size + " " + t.source + ".";
             info.math = "(s, t) = " + tex(l.st);
             break;
         case Phase::MipLevel: {
@@ -294,24 +299,25 @@ void TextureMap::narrate(const State& s, StepInfo& info) {
             const TextureImage& im = level(s, k);
             info.event = "mip-level";
             info.line = kLineMipLevel;
-            info.narration = "Level " + std::to_string(k) + ": " + std::to_string(im.width) + "×" +
-                             std::to_string(im.height) + ", each texel the average of " +
-                             (level(s, k - 1).width > 1 && level(s, k - 1).height > 1 ? "2 × 2"
-                                                                                       : "2") +
-                             " texels of level " + std::to_string(k - 1) + " (texel (0, 0) = " +
-                             num(im.at(0, 0), 4) + ").";
-            info.math = "T_k(i, j) = \\tfrac{1}{4} \\sum_{a, b \\in \\{0, 1\\}} T_{k-1}(2i + a, 2j + b)";
+            info.narration =
+                "Level " + std::to_string(k) + ": " + std::to_string(im.width) + "×" +
+                std::to_string(im.height) + ", each texel the average of " +
+                (level(s, k - 1).width > 1 && level(s, k - 1).height > 1 ? "2 × 2" : "2") +
+                " texels of level " + std::to_string(k - 1) +
+                " (texel (0, 0) = " + num(im.at(0, 0), 4) + ").";
+            info.math =
+                "T_k(i, j) = \\tfrac{1}{4} \\sum_{a, b \\in \\{0, 1\\}} T_{k-1}(2i + a, 2j + b)";
             break;
         }
         case Phase::LevelOfDetail: {
             info.event = "level-of-detail";
             info.line = kLineLod;
             const double rho = in.footprint * std::max(t.image.width, t.image.height);
-            info.narration = "The footprint " + num(in.footprint, 4) + " covers ρ = " + num(rho, 4) +
-                             " texels: λ = " + (rho > 1 ? "log₂ ρ" : "0 (magnified)") + " = " +
-                             num(l.lambda, 4) + ", between levels " + std::to_string(l.level0) +
-                             " and " + std::to_string(l.level1) + " (share " + num(l.blend, 4) +
-                             " of the coarser).";
+            info.narration =
+                "The footprint " + num(in.footprint, 4) + " covers ρ = " + num(rho, 4) +
+                " texels: λ = " + (rho > 1 ? "log₂ ρ" : "0 (magnified)") + " = " +
+                num(l.lambda, 4) + ", between levels " + std::to_string(l.level0) + " and " +
+                std::to_string(l.level1) + " (share " + num(l.blend, 4) + " of the coarser).";
             info.math = "\\lambda = \\log_2(" + tex(rho, 4) + ") = " + tex(l.lambda, 4);
             break;
         }
@@ -323,8 +329,9 @@ void TextureMap::narrate(const State& s, StepInfo& info) {
                 info.event = "nearest";
                 info.line = kLineNearest;
                 info.narration = "Texel (⌊s·" + std::to_string(t.image.width) + "⌋, ⌊t·" +
-                                 std::to_string(t.image.height) + "⌋) = " + texel_text(tp.texel[0]) +
-                                 ": colour " + num(tp.color, 4) + ".";
+                                 std::to_string(t.image.height) +
+                                 "⌋) = " + texel_text(tp.texel[0]) + ": colour " +
+                                 num(tp.color, 4) + ".";
                 info.math = "T" + texel_text(tp.texel[0]) + " = " + tex(tp.color, 4);
                 break;
             }
@@ -332,15 +339,17 @@ void TextureMap::narrate(const State& s, StepInfo& info) {
             const TextureImage& im = level(s, k);
             info.event = t.filter == TexFilter::Mipmap ? "level-sample" : "bilinear";
             info.line = t.filter == TexFilter::Mipmap ? kLineLevelSample : kLineBilinear;
-            info.narration = (t.filter == TexFilter::Mipmap ? "Level " + std::to_string(k) + ": " : "") +
-                             "texels " + texel_text(tp.texel[0]) + ", " + texel_text(tp.texel[1]) +
-                             ", " + texel_text(tp.texel[2]) + ", " + texel_text(tp.texel[3]) +
-                             " with f = " + num(tp.f.x, 4) + ", g = " + num(tp.f.y, 4) +
-                             ": weights " + num(tp.weight[0], 4) + ", " + num(tp.weight[1], 4) +
-                             ", " + num(tp.weight[2], 4) + ", " + num(tp.weight[3], 4) +
-                             " (sum 1); colour " + taps_text(tp, im) + " = " + num(tp.color, 4) + ".";
-            info.math = "c = (1-f)(1-g)\\,T_{00} + f(1-g)\\,T_{10} + (1-f)g\\,T_{01} + fg\\,T_{11} = " +
-                        tex(tp.color, 4);
+            info.narration =
+                (t.filter == TexFilter::Mipmap ? "Level " + std::to_string(k) + ": " : "") +
+                "texels " + texel_text(tp.texel[0]) + ", " + texel_text(tp.texel[1]) + ", " +
+                texel_text(tp.texel[2]) + ", " + texel_text(tp.texel[3]) +
+                " with f = " + num(tp.f.x, 4) + ", g = " + num(tp.f.y, 4) + ": weights " +
+                num(tp.weight[0], 4) + ", " + num(tp.weight[1], 4) + ", " + num(tp.weight[2], 4) +
+                ", " + num(tp.weight[3], 4) + " (sum 1); colour " + taps_text(tp, im) + " = " +
+                num(tp.color, 4) + ".";
+            info.math =
+                "c = (1-f)(1-g)\\,T_{00} + f(1-g)\\,T_{10} + (1-f)g\\,T_{01} + fg\\,T_{11} = " +
+                tex(tp.color, 4);
             break;
         }
         case Phase::Blend:
@@ -350,8 +359,8 @@ void TextureMap::narrate(const State& s, StepInfo& info) {
             info.narration = "Blend: (1 − " + num(l.blend, 4) + ")·" + num(l.taps.color, 4) +
                              " + " + num(l.blend, 4) + "·" + num(l.coarse.color, 4) + " = " +
                              num(l.color, 4) + ".";
-            info.math = "c = (1 - " + tex(l.blend, 4) + ")\\,c_0 + " + tex(l.blend, 4) + "\\,c_1 = " +
-                        tex(l.color, 4);
+            info.math = "c = (1 - " + tex(l.blend, 4) + ")\\,c_0 + " + tex(l.blend, 4) +
+                        "\\,c_1 = " + tex(l.color, 4);
             break;
     }
     info.vars = {{"P", vec(in.point)}, {"uv", vec(s.r.frame.uv)}};
@@ -361,8 +370,8 @@ void TextureMap::narrate(const State& s, StepInfo& info) {
         info.vars.push_back({"levels", std::vector<double>{double(l.level0), double(l.level1)}});
     }
     if (s.last >= Phase::Sample) {
-        info.vars.push_back({"texel", std::vector<double>{double(l.taps.texel[0].x),
-                                                          double(l.taps.texel[0].y)}});
+        info.vars.push_back(
+            {"texel", std::vector<double>{double(l.taps.texel[0].x), double(l.taps.texel[0].y)}});
         info.vars.push_back({"weights", std::vector<double>(l.taps.weight.begin(),
                                                             l.taps.weight.begin() + l.taps.count)});
     }

@@ -31,18 +31,26 @@ struct TextureMap {
         UvSurface surface;
         glm::dvec3 point{0.0};  // on the surface, world space
         Texture texture;
-        double footprint = 0;   // mipmap: the pixel's preimage side in (u, v) units, ≥ 0
+        double footprint = 0;  // mipmap: the pixel's preimage side in (u, v) units, ≥ 0
         bool operator==(const Input&) const = default;
     };
     struct Result {
-        UvFrame frame;          // (u, v), and the partials
-        TextureLookup lookup;   // the wrapped (s, t), the texels, their weights, the colour
-        int levels = 1;         // mipmap levels
+        UvFrame frame;         // (u, v), and the partials
+        TextureLookup lookup;  // the wrapped (s, t), the texels, their weights, the colour
+        int levels = 1;        // mipmap levels
         bool operator==(const Result&) const = default;
     };
 
-    enum class Phase : std::uint8_t { Map, Wrap, MipLevel, LevelOfDetail, Sample, SampleCoarse,
-                                      Blend, Done };
+    enum class Phase : std::uint8_t {
+        Map,
+        Wrap,
+        MipLevel,
+        LevelOfDetail,
+        Sample,
+        SampleCoarse,
+        Blend,
+        Done
+    };
 
     struct State {
         Shared<Input> in;

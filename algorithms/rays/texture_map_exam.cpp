@@ -94,7 +94,8 @@ TextureMap::Input TextureMap::exam_input(Rng& rng) {
             s.uv = {dvec2(0, 0), dvec2(1, 0), dvec2(0, 1)};
             if (rng.chance(0.5)) s.uv = {dvec2(0.25, 0.25), dvec2(0.75, 0.25), dvec2(0.25, 0.75)};
             const double beta = 0.25 * static_cast<double>(rng.integer(0, 3));
-            const double gamma = 0.25 * static_cast<double>(rng.integer(0, 3 - static_cast<int>(beta * 4)));
+            const double gamma =
+                0.25 * static_cast<double>(rng.integer(0, 3 - static_cast<int>(beta * 4)));
             in.point = s.p[0] + beta * (s.p[1] - s.p[0]) + gamma * (s.p[2] - s.p[0]);
             break;
         }

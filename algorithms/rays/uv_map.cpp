@@ -29,7 +29,8 @@ bool sphere_like(QuadricKind k) {
 dvec3 default_u_axis(dvec3 normal) {
     const dvec3 n = unit(normal);
     const dvec3 x{1, 0, 0};
-    return std::fabs(n.x) < 0.9 ? unit(x - glm::dot(x, n) * n) : unit(glm::cross(n, dvec3(0, 1, 0)));
+    return std::fabs(n.x) < 0.9 ? unit(x - glm::dot(x, n) * n)
+                                : unit(glm::cross(n, dvec3(0, 1, 0)));
 }
 
 void validate_uv_surface(const UvSurface& s, const std::string& field) {
@@ -43,11 +44,9 @@ void validate_uv_surface(const UvSurface& s, const std::string& field) {
                     throw InputError(field + ".point[" + std::to_string(c) + "]",
                                      "must be a finite number of magnitude at most 1e12");
             const dvec3 n = unit(s.normal);
-            if (n == dvec3(0.0))
-                throw InputError(field + ".normal", "must not be the zero vector");
+            if (n == dvec3(0.0)) throw InputError(field + ".normal", "must not be the zero vector");
             const dvec3 a = unit(s.u_axis);
-            if (a == dvec3(0.0))
-                throw InputError(field + ".u_axis", "must not be the zero vector");
+            if (a == dvec3(0.0)) throw InputError(field + ".u_axis", "must not be the zero vector");
             if (glm::length(a - glm::dot(a, n) * n) < 1e-6)
                 throw InputError(field + ".u_axis",
                                  "must not be parallel to the plane's normal " + num(s.normal, 4) +
@@ -55,7 +54,8 @@ void validate_uv_surface(const UvSurface& s, const std::string& field) {
             if (!(s.scale > 1e-9 && s.scale < 1e12))
                 throw InputError(field + ".uv_scale",
                                  "must be a length between 1e-9 and 1e12: the size of one texture "
-                                 "repeat (got " + num(s.scale) + ")");
+                                 "repeat (got " +
+                                     num(s.scale) + ")");
             return;
         }
         case UvKind::Triangle: {
@@ -68,16 +68,16 @@ void validate_uv_surface(const UvSurface& s, const std::string& field) {
             const dvec3 e1 = s.p[1] - s.p[0], e2 = s.p[2] - s.p[0];
             const double area2 = glm::length(glm::cross(e1, e2));
             if (!(area2 > 1e-12 * glm::length(e1) * glm::length(e2)) || !(area2 > 0))
-                throw InputError(field + ".vertices",
-                                 "is degenerate: the corners " + num(s.p[0], 4) + ", " +
-                                     num(s.p[1], 4) + ", " + num(s.p[2], 4) +
-                                     " are collinear or coincide (zero area)");
+                throw InputError(field + ".vertices", "is degenerate: the corners " +
+                                                          num(s.p[0], 4) + ", " + num(s.p[1], 4) +
+                                                          ", " + num(s.p[2], 4) +
+                                                          " are collinear or coincide (zero area)");
             for (int k = 0; k < 3; ++k)
                 for (int c = 0; c < 2; ++c)
                     if (!std::isfinite(s.uv[k][c]) || std::fabs(s.uv[k][c]) > 1e9)
-                        throw InputError(field + ".uv[" + std::to_string(k) + "][" +
-                                             std::to_string(c) + "]",
-                                         "must be a finite number of magnitude at most 1e9");
+                        throw InputError(
+                            field + ".uv[" + std::to_string(k) + "][" + std::to_string(c) + "]",
+                            "must be a finite number of magnitude at most 1e9");
             const dvec2 j1 = s.uv[1] - s.uv[0], j2 = s.uv[2] - s.uv[0];
             const double det = j1.x * j2.y - j1.y * j2.x;
             if (!(std::fabs(det) > 1e-12 * glm::length(j1) * glm::length(j2)) || det == 0)
@@ -278,12 +278,13 @@ void check_on_surface(const UvSurface& s, const PreparedUv& p, dvec3 P, const st
             const double d = glm::dot(P - p.p0, n);
             const double size = 1 + glm::length(p.e1) + glm::length(p.e2) + glm::length(P);
             if (std::fabs(d) > 1e-9 * size)
-                throw InputError(field, "must lie in the triangle's plane (it is " + num(d, 4) +
-                                            " off it)");
+                throw InputError(
+                    field, "must lie in the triangle's plane (it is " + num(d, 4) + " off it)");
             const dvec3 b = uv_frame(p, P).barycentric;
             if (b.x < -1e-9 || b.y < -1e-9 || b.z < -1e-9)
-                throw InputError(field, "must lie inside the triangle (its barycentric weights are " +
-                                            num(b, 4) + ")");
+                throw InputError(
+                    field,
+                    "must lie inside the triangle (its barycentric weights are " + num(b, 4) + ")");
             return;
         }
         case UvKind::Quadric: {
@@ -295,12 +296,12 @@ void check_on_surface(const UvSurface& s, const PreparedUv& p, dvec3 P, const st
             const double F = eval_F(f, m);
             if (!(std::fabs(F) <= 1e-9 * size))  // size 0: the cone's apex, on the surface
                 throw InputError(field, std::string("must lie on the ") +
-                                            quadric_kind_name(s.quadric.kind) + " (F = " +
-                                            num(F, 4) + " there, not 0)");
+                                            quadric_kind_name(s.quadric.kind) +
+                                            " (F = " + num(F, 4) + " there, not 0)");
             if (m.z < q.zmin - 1e-9 * (1 + std::fabs(q.zmin)) ||
                 m.z > q.zmax + 1e-9 * (1 + std::fabs(q.zmax)))
-                throw InputError(field, "must lie inside the slab zmin ≤ z ≤ zmax (model z = " +
-                                            num(m.z) + ")");
+                throw InputError(
+                    field, "must lie inside the slab zmin ≤ z ≤ zmax (model z = " + num(m.z) + ")");
             return;
         }
     }

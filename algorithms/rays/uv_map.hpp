@@ -57,15 +57,15 @@ struct PreparedUv {
     UvKind kind = UvKind::Plane;
     QuadricKind quadric_kind = QuadricKind::Sphere;
     PreparedQuadric quadric;
-    glm::dmat3 linear{1.0};   // M's linear part (model → world directions)
-    glm::dvec3 sxyz{1.0};     // the quadric's semi-axes along x, y (and c along z)
+    glm::dmat3 linear{1.0};  // M's linear part (model → world directions)
+    glm::dvec3 sxyz{1.0};    // the quadric's semi-axes along x, y (and c along z)
     double cone_r = 1, hyper_c = 1;
     double zmin = 0, height = 1;  // v = (z − zmin)/height (height 1, zmin 0 when not cut)
     glm::dvec3 origin{0.0}, a{1, 0, 0}, b{0, 1, 0}, n{0, 0, 1};  // plane: unit axes and normal
     double scale = 1;
     glm::dvec3 p0{0.0}, e1{1, 0, 0}, e2{0, 1, 0};  // triangle
-    glm::dvec2 uv0{0.0}, j1{1, 0}, j2{0, 1};        // uv0 and J's columns
-    glm::dvec3 P_u{0.0}, P_v{0.0};                  // triangle and plane: constant partials
+    glm::dvec2 uv0{0.0}, j1{1, 0}, j2{0, 1};       // uv0 and J's columns
+    glm::dvec3 P_u{0.0}, P_v{0.0};                 // triangle and plane: constant partials
     bool operator==(const PreparedUv&) const = default;
 };
 // Precondition: the surface is valid (validate_uv_surface does not throw).

@@ -34,7 +34,9 @@ std::vector<cg::TextureMap::Input> texture_inputs(cg::TexFilter filter) {
         if (rng.chance(0.5)) {
             in.surface.kind = cg::UvKind::Quadric;
             in.surface.quadric.r = rng.uniform(0.5, 2);
-            in.point = in.surface.quadric.r * glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            in.point =
+                in.surface.quadric.r *
+                glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
         } else {
             in.surface.kind = cg::UvKind::Plane;
             in.point = {rng.uniform(-3, 3), rng.uniform(-3, 3), 0};
@@ -86,10 +88,18 @@ void texture_machine(benchmark::State& state, const std::vector<cg::TextureMap::
     state.SetItemsProcessed(state.iterations() * inputs.size());
 }
 
-void BM_TextureMap_Plain(benchmark::State& state) { texture_plain(state, bilinear_inputs()); }
-void BM_TextureMap_StateMachine(benchmark::State& state) { texture_machine(state, bilinear_inputs()); }
-void BM_TextureMap_Mipmap_Plain(benchmark::State& state) { texture_plain(state, mipmap_inputs()); }
-void BM_TextureMap_Mipmap_StateMachine(benchmark::State& state) { texture_machine(state, mipmap_inputs()); }
+void BM_TextureMap_Plain(benchmark::State& state) {
+    texture_plain(state, bilinear_inputs());
+}
+void BM_TextureMap_StateMachine(benchmark::State& state) {
+    texture_machine(state, bilinear_inputs());
+}
+void BM_TextureMap_Mipmap_Plain(benchmark::State& state) {
+    texture_plain(state, mipmap_inputs());
+}
+void BM_TextureMap_Mipmap_StateMachine(benchmark::State& state) {
+    texture_machine(state, mipmap_inputs());
+}
 BENCHMARK(BM_TextureMap_Plain)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TextureMap_StateMachine)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TextureMap_Mipmap_Plain)->Unit(benchmark::kMillisecond);
@@ -102,7 +112,9 @@ const std::vector<cg::BumpMap::Input>& bump_inputs() {
         for (auto& in : v) {
             in.surface.kind = cg::UvKind::Quadric;
             in.surface.quadric.r = rng.uniform(0.5, 2);
-            in.point = in.surface.quadric.r * glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            in.point =
+                in.surface.quadric.r *
+                glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
             in.height.kind = rng.chance(0.5) ? cg::HeightKind::Sines : cg::HeightKind::Noise;
             in.height.amplitude = 0.01;
             in.height.frequency = {8, 4};
@@ -148,14 +160,16 @@ const cg::SolidTextureAlgo::Input& marble_input() {
 }
 
 void BM_SolidTexture_Plain(benchmark::State& state) {
-    for (auto _ : state) benchmark::DoNotOptimize(cg::SolidTextureAlgo::solve(marble_input()).samples.data());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(cg::SolidTextureAlgo::solve(marble_input()).samples.data());
     state.SetItemsProcessed(state.iterations() * marble_input().points.size());
 }
 BENCHMARK(BM_SolidTexture_Plain)->Unit(benchmark::kMillisecond);
 
 void BM_SolidTexture_StateMachine(benchmark::State& state) {
     const auto start = cg::SolidTextureAlgo::start(marble_input());
-    for (auto _ : state) benchmark::DoNotOptimize(cg::run_to_end<cg::SolidTextureAlgo>(start).samples.data());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(cg::run_to_end<cg::SolidTextureAlgo>(start).samples.data());
     state.SetItemsProcessed(state.iterations() * marble_input().points.size());
 }
 BENCHMARK(BM_SolidTexture_StateMachine)->Unit(benchmark::kMillisecond);

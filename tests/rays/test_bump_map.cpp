@@ -40,7 +40,6 @@ BumpMap::Input input_of(const cg::json& j) {
     return *static_cast<cg::RunOf<BumpMap>&>(*run).state.in;
 }
 
-
 std::string error_of(const std::string& text) {
     try {
         auto r = algo().create(cg::parse_json(text));
@@ -96,7 +95,8 @@ TEST_CASE("bump-map: on planes Blinn's normal is the displaced surface's normal"
         s.normal = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
         if (glm::length(s.normal) < 0.1) s.normal = {0, 0, 1};
         s.u_axis = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
-        if (glm::length(glm::cross(glm::normalize(s.normal), s.u_axis)) < 0.2) s.u_axis = cg::default_u_axis(s.normal);
+        if (glm::length(glm::cross(glm::normalize(s.normal), s.u_axis)) < 0.2)
+            s.u_axis = cg::default_u_axis(s.normal);
         s.origin = {rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-3, 3)};
         s.scale = rng.uniform(0.2, 4);
         in.height.kind = cg::HeightKind::Sines;
@@ -115,8 +115,8 @@ TEST_CASE("bump-map: on planes Blinn's normal is the displaced surface's normal"
         auto point = [&](t::LD u, t::LD v) { return O + (sc * u) * A + (sc * v) * B; };
         auto normal = [&](t::LD, t::LD) { return N; };
         auto height = [&](t::LD u, t::LD v) { return sines_ref(in.height, u, v); };
-        const t::LVec want = t::displaced_normal_ref(point, normal, height, r.frame.uv.x,
-                                                     r.frame.uv.y, 1e-7L, N);
+        const t::LVec want =
+            t::displaced_normal_ref(point, normal, height, r.frame.uv.x, r.frame.uv.y, 1e-7L, N);
         CHECK(angle_to(r.bump.perturbed, want) < 1e-7);
         CHECK(glm::length(r.bump.normal - glm::normalize(s.normal)) < 1e-12);
         CHECK(glm::length(r.bump.perturbed) == Approx(1).epsilon(1e-14));
@@ -147,7 +147,8 @@ TEST_CASE("bump-map: on curved and mirrored surfaces it agrees to the size of th
             };
             normal = [point, r](t::LD u, t::LD v) { return (1 / r) * point(u, v); };
             const double ph = rng.uniform(-3, 3), th = rng.uniform(0.3, 2.8);
-            in.point = double(r) * dvec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+            in.point = double(r) * dvec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
+                                         std::cos(th));
         } else if (kind == 1) {  // the cylinder x² + y² = 1, 0 ≤ z ≤ 2: v = z/2
             in.surface.kind = cg::UvKind::Quadric;
             in.surface.quadric.kind = cg::QuadricKind::Cylinder;
@@ -168,7 +169,9 @@ TEST_CASE("bump-map: on curved and mirrored surfaces it agrees to the size of th
             in.surface.p = {dvec3(0, 0, 0), dvec3(2, 0, 0), dvec3(0, 2, 0)};
             in.surface.uv = {dvec2(1, 0), dvec2(0, 0), dvec2(1, 1)};
             const cg::PreparedUv p = cg::prepare_uv(in.surface);
-            point = [p](t::LD u, t::LD v) { return t::lv(cg::uv_point(p, dvec2(double(u), double(v)))); };
+            point = [p](t::LD u, t::LD v) {
+                return t::lv(cg::uv_point(p, dvec2(double(u), double(v))));
+            };
             normal = [](t::LD, t::LD) { return t::LVec{0, 0, 1}; };
             in.point = {rng.uniform(0.1, 0.8), rng.uniform(0.1, 0.8), 0};
         }
@@ -241,7 +244,9 @@ TEST_CASE("bump-map: the state machine gives the plain function's answer, bit fo
         in.surface.kind = trial % 2 ? cg::UvKind::Plane : cg::UvKind::Quadric;
         if (in.surface.kind == cg::UvKind::Quadric) {
             in.surface.quadric.r = rng.uniform(0.5, 2);
-            in.point = in.surface.quadric.r * glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            in.point =
+                in.surface.quadric.r *
+                glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
             if (trial % 50 == 0) in.point = {0, 0, -in.surface.quadric.r};  // the south pole
         } else {
             in.point = {rng.uniform(-3, 3), rng.uniform(-3, 3), 0};
@@ -276,7 +281,8 @@ TEST_CASE("bump-map: the state machine gives the plain function's answer, bit fo
 }
 
 TEST_CASE("bump-map: bad input is refused with the field named", "[rays][bump-map][errors]") {
-    const std::string plane = R"("surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0, 0, 0])";
+    const std::string plane =
+        R"("surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0, 0, 0])";
     CHECK_THAT(error_of("{" + plane + R"(, "height": {"type": "sines", "step": 0}})"),
                Catch::StartsWith("height.step: must be between 1e-9 and 0.1"));
     CHECK_THAT(error_of("{" + plane + R"(, "height": {"type": "sines", "step": 0.5}})"),
@@ -295,10 +301,14 @@ TEST_CASE("bump-map: bad input is refused with the field named", "[rays][bump-ma
                Catch::StartsWith("height.amplitude: must be a number of magnitude at most 1e6"));
     CHECK_THAT(error_of("{" + plane + R"(, "height": {"type": "sines"}, "light": [0, 0, 0]})"),
                Catch::StartsWith("light: must not be the zero vector"));
-    CHECK_THAT(error_of(R"({"surface": {"type": "sphere", "params": {"r": 1}}, "point": [0, 0, 2], "height": {"type": "sines"}})"),
-               Catch::StartsWith("point: must lie on the sphere"));
-    CHECK_THAT(error_of(R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "uv_scale": 0}, "point": [0, 0, 0], "height": {"type": "sines"}})"),
-               Catch::StartsWith("surface.uv_scale: must be a length between 1e-9 and 1e12"));
+    CHECK_THAT(
+        error_of(
+            R"({"surface": {"type": "sphere", "params": {"r": 1}}, "point": [0, 0, 2], "height": {"type": "sines"}})"),
+        Catch::StartsWith("point: must lie on the sphere"));
+    CHECK_THAT(
+        error_of(
+            R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "uv_scale": 0}, "point": [0, 0, 0], "height": {"type": "sines"}})"),
+        Catch::StartsWith("surface.uv_scale: must be a length between 1e-9 and 1e12"));
 }
 
 TEST_CASE("bump-map: exam problems agree with the derivatives worked by hand",
@@ -329,8 +339,8 @@ TEST_CASE("bump-map: exam problems agree with the derivatives worked by hand",
             // Equator, r = 1: n = 2π² x̂ (the outward point), D = −π B_u ŷ' − 2π B_v ẑ in the
             // point's frame (ŷ' the eastward unit vector).
             const dvec3 out = r.bump.normal, east = glm::normalize(r.frame.P_u);
-            const dvec3 want =
-                glm::normalize(2 * kPi * kPi * out - kPi * Bu * east - 2 * kPi * Bv * dvec3(0, 0, 1));
+            const dvec3 want = glm::normalize(2 * kPi * kPi * out - kPi * Bu * east -
+                                              2 * kPi * Bv * dvec3(0, 0, 1));
             CHECK(glm::length(r.bump.perturbed - want) < 1e-6);
         }
         CHECK(cg::grade(p, p.expected)[2].correct);
@@ -345,7 +355,8 @@ TEST_CASE("bump-map: traces are deterministic and stepping back reproduces them"
     cg::test::check_replay(algo(), algo().example(), cg::test::kEveryStep);
     cg::test::check_replay(
         algo(),
-        cg::parse_json(R"({"surface": {"type": "sphere", "params": {"r": 1}}, "point": [0.6, 0, 0.8],
+        cg::parse_json(
+            R"({"surface": {"type": "sphere", "params": {"r": 1}}, "point": [0.6, 0, 0.8],
                            "height": {"type": "noise", "amplitude": 0.004, "frequency": [40, 20], "seed": 3}})"),
         cg::test::kEveryStep);
 }

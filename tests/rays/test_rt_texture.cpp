@@ -41,7 +41,8 @@ std::string scene_error(const std::string& text) {
     return "(accepted)";
 }
 
-RayTracer::Result tree_of(const rt::Scene& s, int i, int j, std::set<std::string>* events = nullptr) {
+RayTracer::Result tree_of(const rt::Scene& s, int i, int j,
+                          std::set<std::string>* events = nullptr) {
     RayTracer::Input in;
     in.scene = s;
     in.granularity = RayTracer::Granularity::RayTree;
@@ -85,7 +86,8 @@ rt::Scene textured_scene(cg::Rng& rng) {
             const int W = 1 << rng.integer(1, 4), H = 1 << rng.integer(1, 4);
             m.tex.texture.image.width = W, m.tex.texture.image.height = H;
             for (int q = 0; q < W * H; ++q)
-                m.tex.texture.image.texels.push_back({rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1)});
+                m.tex.texture.image.texels.push_back(
+                    {rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1)});
             m.tex.texture.filter = static_cast<cg::TexFilter>(rng.integer(0, 2));
             m.tex.texture.wrap = rng.chance(0.5) ? cg::TexWrap::Repeat : cg::TexWrap::Clamp;
         } else if (tex == 1) {
@@ -123,7 +125,8 @@ rt::Scene textured_scene(cg::Rng& rng) {
         o.quadric.kind = k == 2 ? cg::QuadricKind::Cylinder : cg::QuadricKind::Sphere;
         o.quadric.r = rng.uniform(0.4, 0.9);
         o.quadric.zmin = -0.5, o.quadric.zmax = 0.5;
-        if (o.quadric.kind == cg::QuadricKind::Sphere) o.quadric.zmin = -cg::Quadric::kInf, o.quadric.zmax = cg::Quadric::kInf;
+        if (o.quadric.kind == cg::QuadricKind::Sphere)
+            o.quadric.zmin = -cg::Quadric::kInf, o.quadric.zmax = cg::Quadric::kInf;
         glm::dmat4 m(1.0);
         m[3] = glm::dvec4(rng.uniform(-2, 2), rng.uniform(-0.5, 0.5), rng.uniform(-1, 1), 1);
         o.quadric.world_from_model = m;
@@ -246,8 +249,9 @@ TEST_CASE("rt-texture: on a receding floor the mipmap level grows with distance"
     CHECK(last > 2);
 }
 
-TEST_CASE("rt-texture: on random textured scenes the stepped tree equals the plain tracer, bit for bit",
-          "[rays][ray-tracer][texture]") {
+TEST_CASE(
+    "rt-texture: on random textured scenes the stepped tree equals the plain tracer, bit for bit",
+    "[rays][ray-tracer][texture]") {
     std::set<std::string> events;
     int textured = 0;
     for (int trial = 0; trial < 150; ++trial) {
@@ -284,7 +288,8 @@ TEST_CASE("rt-texture: scene files with textures are read, written back and refu
     const std::string dir = std::string(CG_SOURCE_DIR) + "/tests/golden/ray-tracer/";
     for (const char* name : {"bumped-plane", "marble-vase"}) {
         std::ifstream f(dir + name + ".json");
-        const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+        const std::string text((std::istreambuf_iterator<char>(f)),
+                               std::istreambuf_iterator<char>());
         const rt::Scene s = scene(text);
         const rt::Scene back = rt::scene_from_json(rt::scene_to_json(s));
         CHECK(back == s);
@@ -292,32 +297,53 @@ TEST_CASE("rt-texture: scene files with textures are read, written back and refu
     const rt::Scene g = scene(kGlobe);
     CHECK(rt::scene_from_json(rt::scene_to_json(g)) == g);
 
-    const std::string head = R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]}, "materials": [{"name": "m", )";
-    const std::string tail = R"(}], "objects": [{"type": "sphere", "params": {"r": 1}, "material": "m"}]})";
+    const std::string head =
+        R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]}, "materials": [{"name": "m", )";
+    const std::string tail =
+        R"(}], "objects": [{"type": "sphere", "params": {"r": 1}, "material": "m"}]})";
     CHECK(scene_error(head + R"("texture": {"image": "/nonexistent/earth.png"})" + tail) ==
           "materials[0].texture.image: cannot read \"/nonexistent/earth.png\": no such file");
-    CHECK_THAT(scene_error(head + R"("texture": {"checker": {}}, "solid_texture": {"type": "wood"})" + tail),
-               Catch::StartsWith("materials[0].solid_texture: cannot be combined with \"texture\""));
-    CHECK_THAT(scene_error(head + R"("texture": {"grid": {"width": 3, "height": 1, "texels": [[0, 1, 0]]}, "filter": "mipmap"})" + tail),
-               Catch::StartsWith("materials[0].texture.filter: \"mipmap\" needs"));
+    CHECK_THAT(
+        scene_error(head + R"("texture": {"checker": {}}, "solid_texture": {"type": "wood"})" +
+                    tail),
+        Catch::StartsWith("materials[0].solid_texture: cannot be combined with \"texture\""));
+    CHECK_THAT(
+        scene_error(
+            head +
+            R"("texture": {"grid": {"width": 3, "height": 1, "texels": [[0, 1, 0]]}, "filter": "mipmap"})" +
+            tail),
+        Catch::StartsWith("materials[0].texture.filter: \"mipmap\" needs"));
     CHECK_THAT(scene_error(head + R"("bump": {"type": "sines", "step": 1})" + tail),
                Catch::StartsWith("materials[0].bump.step: must be between"));
     CHECK_THAT(scene_error(head + R"("solid_texture": {"type": "marble", "octaves": 99})" + tail),
                Catch::StartsWith("materials[0].solid_texture.octaves: must be"));
     CHECK_THAT(scene_error(head + R"("texture": 3)" + tail),
                Catch::StartsWith("materials[0].texture: must be a JSON object"));
-    const std::string tex_head = R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]}, "materials": [{"name": "m", "texture": {"checker": {}}}], "objects": [)";
-    CHECK_THAT(scene_error(tex_head + R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "uv": [[0, 0], [1, 1], [2, 2]], "material": "m"}]})"),
-               Catch::StartsWith("objects[0].uv: must not put the three corners on one line"));
-    CHECK_THAT(scene_error(tex_head + R"({"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "u_axis": [0, 2, 0], "material": "m"}]})"),
-               Catch::StartsWith("objects[0].u_axis: must not be parallel"));
-    CHECK_THAT(scene_error(tex_head + R"({"type": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]], "uv": [[0, 0]], "material": "m"}]})"),
-               Catch::StartsWith("objects[0].uv: must give one (u, v) per vertex"));
-    CHECK_THAT(scene_error(tex_head + R"({"type": "sphere", "params": {"r": 1}, "uv": [[0, 0]], "material": "m"}]})"),
-               Catch::StartsWith("objects[0].uv: is not a known field"));
+    const std::string tex_head =
+        R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]}, "materials": [{"name": "m", "texture": {"checker": {}}}], "objects": [)";
+    CHECK_THAT(
+        scene_error(
+            tex_head +
+            R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "uv": [[0, 0], [1, 1], [2, 2]], "material": "m"}]})"),
+        Catch::StartsWith("objects[0].uv: must not put the three corners on one line"));
+    CHECK_THAT(
+        scene_error(
+            tex_head +
+            R"({"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "u_axis": [0, 2, 0], "material": "m"}]})"),
+        Catch::StartsWith("objects[0].u_axis: must not be parallel"));
+    CHECK_THAT(
+        scene_error(
+            tex_head +
+            R"({"type": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]], "uv": [[0, 0]], "material": "m"}]})"),
+        Catch::StartsWith("objects[0].uv: must give one (u, v) per vertex"));
+    CHECK_THAT(
+        scene_error(tex_head +
+                    R"({"type": "sphere", "params": {"r": 1}, "uv": [[0, 0]], "material": "m"}]})"),
+        Catch::StartsWith("objects[0].uv: is not a known field"));
 }
 
-TEST_CASE("rt-texture: render-scene matches the textured golden images", "[rays][ray-tracer][golden]") {
+TEST_CASE("rt-texture: render-scene matches the textured golden images",
+          "[rays][ray-tracer][golden]") {
     const std::string dir = std::string(CG_SOURCE_DIR) + "/tests/golden/ray-tracer/";
     for (const char* name : {"globe", "bumped-plane", "marble-vase"}) {
         CAPTURE(name);
@@ -342,8 +368,8 @@ TEST_CASE("rt-texture: render-scene matches the textured golden images", "[rays]
     auto r = cg::test::cgsandbox({"render-scene", dir + "globe.json", "--out",
                                   cg::test::output_path("globe-again.png"), "--size", "8x6"});
     CHECK(r.exit_code == 0);
-    const std::string lonely = cg::test::write_temp(
-        "lonely.json", R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]},
+    const std::string lonely =
+        cg::test::write_temp("lonely.json", R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]},
           "materials": [{"name": "m", "texture": {"image": "missing-texture.png"}}],
           "objects": [{"type": "sphere", "params": {"r": 1}, "material": "m"}]})");
     r = cg::test::cgsandbox({"render-scene", lonely, "--out", cg::test::output_path("lonely.png")});

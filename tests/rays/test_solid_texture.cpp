@@ -38,7 +38,6 @@ SolidTextureAlgo::Input input_of(const cg::json& j) {
     return *static_cast<cg::RunOf<SolidTextureAlgo>&>(*run).state.in;
 }
 
-
 std::string error_of(const std::string& text) {
     try {
         auto r = algo().create(cg::parse_json(text));
@@ -65,7 +64,8 @@ TEST_CASE("solid-texture: Perlin noise agrees with its definition in long double
         CAPTURE(trial, p.x, p.y, p.z);
         const double got = cg::perlin_noise(n, p);
         const t::LD want = t::noise_ref(n, t::lv(p));
-        CHECK(std::fabs(got - want) < 1e-12L * (1 + std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z)));
+        CHECK(std::fabs(got - want) <
+              1e-12L * (1 + std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z)));
         largest = std::max(largest, std::fabs(got));
         // The detailed evaluation is the same arithmetic.
         const cg::NoiseDetail d = cg::perlin_detail(n, p);
@@ -80,13 +80,15 @@ TEST_CASE("solid-texture: noise is 0 at lattice points and reproducible from its
     cg::Rng rng(22);
     for (int trial = 0; trial < 2000; ++trial) {
         const cg::Perlin n = cg::make_perlin(rng.next());
-        const dvec3 p(static_cast<double>(rng.integer(-500, 500)), static_cast<double>(rng.integer(-500, 500)),
+        const dvec3 p(static_cast<double>(rng.integer(-500, 500)),
+                      static_cast<double>(rng.integer(-500, 500)),
                       static_cast<double>(rng.integer(-500, 500)));
         CHECK(cg::perlin_noise(n, p) == 0);
     }
     // π is a permutation of 0…255; a seed gives the same one every time, another seed another.
     for (std::uint64_t seed = 0; seed < 50; ++seed) {
-        const cg::Perlin a = cg::make_perlin(seed), b = cg::make_perlin(seed), c = cg::make_perlin(seed + 1);
+        const cg::Perlin a = cg::make_perlin(seed), b = cg::make_perlin(seed),
+                         c = cg::make_perlin(seed + 1);
         CHECK(a == b);
         CHECK(a.perm != c.perm);
         std::set<int> values(a.perm.begin(), a.perm.end());
@@ -143,12 +145,13 @@ TEST_CASE("solid-texture: the fade curve 6t⁵ − 15t⁴ + 10t³", "[rays][soli
         CHECK(std::fabs(cg::fade(x) - t::fade_ref(x)) < 1e-14L);
     }
     const double h = 1e-5;
-    CHECK(std::fabs((cg::fade(h) - cg::fade(0)) / h) < 1e-8);               // f'(0) = 0
-    CHECK(std::fabs((cg::fade(1) - cg::fade(1 - h)) / h) < 1e-8);           // f'(1) = 0
+    CHECK(std::fabs((cg::fade(h) - cg::fade(0)) / h) < 1e-8);                // f'(0) = 0
+    CHECK(std::fabs((cg::fade(1) - cg::fade(1 - h)) / h) < 1e-8);            // f'(1) = 0
     CHECK(std::fabs((cg::fade(2 * h) - 2 * cg::fade(h)) / (h * h)) < 1e-3);  // f''(0) = 0
 }
 
-TEST_CASE("solid-texture: the four textures follow their formulas", "[rays][solid-texture][reference]") {
+TEST_CASE("solid-texture: the four textures follow their formulas",
+          "[rays][solid-texture][reference]") {
     cg::Rng rng(24);
     for (int trial = 0; trial < 4000; ++trial) {
         cg::SolidTexture tx;
@@ -169,8 +172,9 @@ TEST_CASE("solid-texture: the four textures follow their formulas", "[rays][soli
         t::LD want = 0;
         switch (tx.kind) {
             case cg::SolidKind::Checker: {
-                const long long k = static_cast<long long>(std::floor(P.x / tx.size) + std::floor(P.y / tx.size) +
-                                                           std::floor(P.z / tx.size));
+                const long long k =
+                    static_cast<long long>(std::floor(P.x / tx.size) + std::floor(P.y / tx.size) +
+                                           std::floor(P.z / tx.size));
                 want = ((k % 2) + 2) % 2;
                 break;
             }
@@ -179,16 +183,19 @@ TEST_CASE("solid-texture: the four textures follow their formulas", "[rays][soli
                 break;
             case cg::SolidKind::Wood: {
                 const t::LD r = t::len(P - t::dot(P, A) * A);
-                const t::LD rings = r / tx.period + tx.amplitude * t::noise_ref(n, tx.frequency * P);
+                const t::LD rings =
+                    r / tx.period + tx.amplitude * t::noise_ref(n, tx.frequency * P);
                 want = rings - std::floor(rings);
                 break;
             }
             case cg::SolidKind::Marble: {
                 t::LD turb = 0;
                 for (int k = 0; k < tx.octaves; ++k)
-                    turb += std::fabs(t::noise_ref(n, std::ldexp(1.0L, k) * tx.frequency * P)) / std::ldexp(1.0L, k);
+                    turb += std::fabs(t::noise_ref(n, std::ldexp(1.0L, k) * tx.frequency * P)) /
+                            std::ldexp(1.0L, k);
                 CHECK(std::fabs(s.noise - turb) < 1e-11L);
-                want = 0.5L * (1 + std::sin(2 * t::kPiL * t::dot(P, A) / tx.period + tx.amplitude * turb));
+                want = 0.5L *
+                       (1 + std::sin(2 * t::kPiL * t::dot(P, A) / tx.period + tx.amplitude * turb));
                 break;
             }
         }
@@ -203,11 +210,10 @@ TEST_CASE("solid-texture: the four textures follow their formulas", "[rays][soli
 
 TEST_CASE("solid-texture: the worked steps and the plain function agree bit for bit",
           "[rays][solid-texture]") {
-    const auto tr = cg::test::run_traced<SolidTextureAlgo>(
-        input_of(algo().example()));
-    CHECK(cg::test::events(tr) ==
-          std::vector<std::string>{"lattice", "gradients", "fade", "interpolate", "turbulence",
-                                   "colour", "point", "point"});
+    const auto tr = cg::test::run_traced<SolidTextureAlgo>(input_of(algo().example()));
+    CHECK(cg::test::events(tr) == std::vector<std::string>{"lattice", "gradients", "fade",
+                                                           "interpolate", "turbulence", "colour",
+                                                           "point", "point"});
     const SolidTextureAlgo::Input in = input_of(algo().example());
     const cg::Perlin n = cg::make_perlin(in.texture.seed);
     // The worked noise is the noise at f p, and the octaves add up to the turbulence used.
@@ -241,7 +247,8 @@ TEST_CASE("solid-texture: the worked steps and the plain function agree bit for 
     }
 }
 
-TEST_CASE("solid-texture: bad input is refused with the field named", "[rays][solid-texture][errors]") {
+TEST_CASE("solid-texture: bad input is refused with the field named",
+          "[rays][solid-texture][errors]") {
     const std::string pts = R"("points": [[0, 0, 0]])";
     CHECK_THAT(error_of(R"({"texture": {"type": "marble", "octaves": 0}, )" + pts + "}"),
                Catch::StartsWith("texture.octaves: must be a number of octaves from 1 to 16"));
@@ -256,7 +263,8 @@ TEST_CASE("solid-texture: bad input is refused with the field named", "[rays][so
     CHECK_THAT(error_of(R"({"texture": {"type": "checker", "octaves": 3}, )" + pts + "}"),
                Catch::StartsWith("texture.octaves: is not a field of a checker solid texture"));
     CHECK_THAT(error_of(R"({"texture": {"type": "granite"}, )" + pts + "}"),
-               Catch::StartsWith("texture.type: must be \"checker\", \"stripes\", \"wood\" or \"marble\""));
+               Catch::StartsWith(
+                   "texture.type: must be \"checker\", \"stripes\", \"wood\" or \"marble\""));
     CHECK_THAT(error_of(R"({"texture": {"type": "wood", "frequency": 1e7}, )" + pts + "}"),
                Catch::StartsWith("texture.frequency: must be between 1e-9 and 1e6"));
     CHECK_THAT(error_of(R"({"texture": {"type": "wood", "colors": [1]}, )" + pts + "}"),
@@ -265,8 +273,10 @@ TEST_CASE("solid-texture: bad input is refused with the field named", "[rays][so
                Catch::StartsWith("points: must list at least one point"));
     CHECK_THAT(error_of(R"({"texture": {"type": "wood"}, "points": [[1e300, 0, 0]]})"),
                Catch::StartsWith("points[0][0]: is too large for the texture's lattice"));
-    CHECK_THAT(error_of(R"({"texture": {"type": "marble", "octaves": 16, "frequency": 1}, "points": [[1e5, 0, 0]]})"),
-               Catch::StartsWith("points[0][0]: is too large for the texture's lattice"));
+    CHECK_THAT(
+        error_of(
+            R"({"texture": {"type": "marble", "octaves": 16, "frequency": 1}, "points": [[1e5, 0, 0]]})"),
+        Catch::StartsWith("points[0][0]: is too large for the texture's lattice"));
     CHECK_THAT(error_of(R"({"texture": {"type": "wood"}, )" + pts + R"(, "detail": 1})"),
                Catch::StartsWith("detail: must be the index of a point, 0 to 0"));
 }
@@ -305,8 +315,7 @@ TEST_CASE("solid-texture: exam problems are answered as the reference says",
 TEST_CASE("solid-texture: traces are deterministic and stepping back reproduces them",
           "[rays][solid-texture]") {
     cg::test::check_replay(algo(), algo().example(), cg::test::kEveryStep);
-    cg::test::check_replay(algo(),
-                           cg::parse_json(R"({"texture": {"type": "wood", "seed": 2},
+    cg::test::check_replay(algo(), cg::parse_json(R"({"texture": {"type": "wood", "seed": 2},
                                               "points": [[0.25, 0.5, 0.75], [0.6, 0.1, 0.2]], "detail": 1})"),
                            cg::test::kEveryStep);
 }

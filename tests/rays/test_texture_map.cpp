@@ -47,7 +47,6 @@ TextureMap::Input input_of(const cg::json& j) {
     return *static_cast<cg::RunOf<TextureMap>&>(*run).state.in;
 }
 
-
 cg::json run(const std::string& text) {
     auto r = algo().create(cg::parse_json(text));
     while (!r->done()) r->step(nullptr);
@@ -95,7 +94,8 @@ dvec3 model_point_on(const cg::Quadric& q, cg::Rng& rng) {
             return {q.p * std::cos(phi), q.q * std::sin(phi), rng.uniform(q.zmin, q.zmax)};
         case cg::QuadricKind::Cone: {
             const double z = rng.uniform(0.2, 2) * (rng.chance(0.5) ? 1 : -1);
-            return {q.p * std::fabs(z) / q.r * std::cos(phi), q.q * std::fabs(z) / q.r * std::sin(phi), z};
+            return {q.p * std::fabs(z) / q.r * std::cos(phi),
+                    q.q * std::fabs(z) / q.r * std::sin(phi), z};
         }
         case cg::QuadricKind::Paraboloid: {
             const double z = rng.uniform(0.1, 3);
@@ -116,8 +116,7 @@ TEST_CASE("texture-map: the globe worked by hand", "[rays][texture-map]") {
     // (0, 0.8, 0.6) on the unit sphere: φ = 90°, θ = acos 0.6; u = ½ + ¼ = 0.75,
     // v = 1 − acos(0.6)/π = 0.704833; on the 4 × 2 texture x = 0.75·4 − ½ = 2.5 (f = ½),
     // y = 0.704833·2 − ½ = 0.909666 (g); texels (2, 0), (3, 0), (2, 1), (3, 1).
-    const auto tr = cg::test::run_traced<TextureMap>(
-        input_of(algo().example()));
+    const auto tr = cg::test::run_traced<TextureMap>(input_of(algo().example()));
     CHECK(cg::test::events(tr) == std::vector<std::string>{"sphere-uv", "wrap", "bilinear"});
     const double v = 1 - std::acos(0.6) / 3.14159265358979323846, g = 2 * v - 0.5;
     CHECK(tr.result.frame.uv.x == Approx(0.75).margin(1e-15));
@@ -128,7 +127,8 @@ TEST_CASE("texture-map: the globe worked by hand", "[rays][texture-map]") {
     CHECK(taps.weight[0] == Approx(0.5 * (1 - g)).margin(1e-12));
     CHECK(taps.weight[3] == Approx(0.5 * g).margin(1e-12));
     // The bottom row is the grid's second: (1, 1, 1) and (0, 0, 0); the top (0, 1, 0), (0, 1, 1).
-    const dvec3 want = 0.5 * (1 - g) * dvec3(1, 1, 1) + 0.5 * g * dvec3(0, 1, 0) + 0.5 * g * dvec3(0, 1, 1);
+    const dvec3 want =
+        0.5 * (1 - g) * dvec3(1, 1, 1) + 0.5 * g * dvec3(0, 1, 0) + 0.5 * g * dvec3(0, 1, 1);
     CHECK(glm::length(tr.result.lookup.color - want) < 1e-12);
     CHECK(tr.steps[0].narration.find("90°") != std::string::npos);
 }
@@ -251,15 +251,16 @@ TEST_CASE("texture-map: (u, v) on transformed quadrics agree with atan2/acos in 
                 q.zmax = rng.uniform(1, 3);
             }
             if (rng.chance(0.6)) {
-                glm::dmat4 m = glm::translate(glm::dmat4(1.0), {rng.uniform(-3, 3), rng.uniform(-3, 3),
-                                                                rng.uniform(-3, 3)});
+                glm::dmat4 m = glm::translate(
+                    glm::dmat4(1.0), {rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-3, 3)});
                 m = glm::rotate(m, rng.uniform(0, 6.28),
                                 glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 1)));
                 m = glm::scale(m, {rng.uniform(0.5, 2), rng.uniform(0.5, 2), rng.uniform(0.5, 2)});
                 q.world_from_model = m;
             }
             const dvec3 m = model_point_on(q, rng);
-            const bool axial = q.kind != cg::QuadricKind::Sphere && q.kind != cg::QuadricKind::Ellipsoid;
+            const bool axial =
+                q.kind != cg::QuadricKind::Sphere && q.kind != cg::QuadricKind::Ellipsoid;
             if (axial && std::isfinite(q.zmin) && (m.z < q.zmin || m.z > q.zmax)) continue;
             const dvec3 P = dvec3(q.world_from_model * glm::dvec4(m, 1));
             cg::UvSurface s;
@@ -275,8 +276,12 @@ TEST_CASE("texture-map: (u, v) on transformed quadrics agree with atan2/acos in 
             // P(u, v) brings the point back, and the partials are its derivatives.
             CHECK(glm::length(cg::uv_point(p, f.uv) - P) < 1e-9 * (1 + glm::length(P)));
             const double h = 1e-6;
-            const dvec3 du = (cg::uv_point(p, f.uv + dvec2(h, 0)) - cg::uv_point(p, f.uv - dvec2(h, 0))) / (2 * h);
-            const dvec3 dv = (cg::uv_point(p, f.uv + dvec2(0, h)) - cg::uv_point(p, f.uv - dvec2(0, h))) / (2 * h);
+            const dvec3 du =
+                (cg::uv_point(p, f.uv + dvec2(h, 0)) - cg::uv_point(p, f.uv - dvec2(h, 0))) /
+                (2 * h);
+            const dvec3 dv =
+                (cg::uv_point(p, f.uv + dvec2(0, h)) - cg::uv_point(p, f.uv - dvec2(0, h))) /
+                (2 * h);
             CHECK(glm::length(du - f.P_u) < 1e-5 * (1 + glm::length(f.P_u)));
             CHECK(glm::length(dv - f.P_v) < 1e-5 * (1 + glm::length(f.P_v)));
             // P_u × P_v points out of the solid (along ∇F) where the transform keeps orientation.
@@ -320,12 +325,14 @@ TEST_CASE("texture-map: bilinear weights sum to 1 and a linear texture comes bac
     }
     // T(i, j) = a + b·(i + ½)/W + c·(j + ½)/H: bilinear gives a + b s + c t between the centres.
     for (int trial = 0; trial < 2000; ++trial) {
-        const int W = static_cast<int>(rng.integer(2, 16)), H = static_cast<int>(rng.integer(2, 16));
+        const int W = static_cast<int>(rng.integer(2, 16)),
+                  H = static_cast<int>(rng.integer(2, 16));
         const double a = rng.uniform(0, 1), b = rng.uniform(-1, 1), c = rng.uniform(-1, 1);
         cg::TextureImage im;
         im.width = W, im.height = H;
         for (int j = 0; j < H; ++j)
-            for (int i = 0; i < W; ++i) im.texels.push_back(dvec3(a + b * (i + 0.5) / W + c * (j + 0.5) / H));
+            for (int i = 0; i < W; ++i)
+                im.texels.push_back(dvec3(a + b * (i + 0.5) / W + c * (j + 0.5) / H));
         const double s = rng.uniform(0.5 / W, 1 - 0.5 / W), tt = rng.uniform(0.5 / H, 1 - 0.5 / H);
         CAPTURE(trial, W, H, s, tt);
         CHECK(cg::sample_bilinear(im, {s, tt}, cg::TexWrap::Clamp).color.x ==
@@ -363,7 +370,8 @@ TEST_CASE("texture-map: mip levels are box averages and the trilinear colour agr
         const cg::TextureLookup l = cg::lookup(tex, &mip, uv, footprint);
         const t::LD rho = footprint * static_cast<t::LD>(std::max(W, H));
         const t::LD lambda =
-            rho <= 1 ? 0 : std::min<t::LD>(std::log2(rho), static_cast<t::LD>(mip.levels.size() - 1));
+            rho <= 1 ? 0
+                     : std::min<t::LD>(std::log2(rho), static_cast<t::LD>(mip.levels.size() - 1));
         CHECK(std::fabs(l.lambda - lambda) < 1e-12L);
         const int k0 = static_cast<int>(std::floor(lambda));
         const int k1 = std::min<int>(k0 + 1, static_cast<int>(mip.levels.size()) - 1);
@@ -394,8 +402,9 @@ TEST_CASE("texture-map: the state machine gives the plain function's answer, bit
             in.surface.kind = cg::UvKind::Quadric;
             in.surface.quadric.kind = cg::QuadricKind::Sphere;
             in.surface.quadric.r = rng.uniform(0.5, 2);
-            in.point = in.surface.quadric.r *
-                       glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            in.point =
+                in.surface.quadric.r *
+                glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
         } else {
             in.surface.kind = cg::UvKind::Triangle;
             in.surface.p = {dvec3(0, 0, 0), dvec3(2, 0, 1), dvec3(0, 3, 0)};
@@ -438,23 +447,31 @@ TEST_CASE("texture-map: image files are read with their first row at v = 1; bad 
     REQUIRE(im.width == 2);
     CHECK(im.at(0, 1) == dvec3(1, 0, 0));  // the file's first row is the top: j = 1
     CHECK(im.at(1, 0) == dvec3(1, 1, 1));
-    const std::string in = R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0.25, 0.75, 0],
-                               "texture": {"image": ")" + png + R"(", "filter": "nearest"}})";
+    const std::string in =
+        R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0.25, 0.75, 0],
+                               "texture": {"image": ")" +
+        png + R"(", "filter": "nearest"}})";
     CHECK(run(in)["color"] == cg::json::parse("[1.0, 0.0, 0.0]"));
 
     const std::string missing = cg::test::output_path("no-such-texture.png");
-    CHECK(error_of(R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0, 0, 0],
-                       "texture": {"image": ")" + missing + R"("}})") ==
-          "texture.image: cannot read \"" + missing + "\": no such file");
+    CHECK(
+        error_of(
+            R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0, 0, 0],
+                       "texture": {"image": ")" +
+            missing + R"("}})") == "texture.image: cannot read \"" + missing + "\": no such file");
     const std::string text = cg::test::write_temp("not-an-image.png", "hello, I am not a PNG");
-    CHECK_THAT(error_of(R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0, 0, 0],
-                       "texture": {"image": ")" + text + R"("}})"),
-               Catch::StartsWith("texture.image: cannot read \"" + text + "\": not an image"));
+    CHECK_THAT(
+        error_of(
+            R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0, 0, 0],
+                       "texture": {"image": ")" +
+            text + R"("}})"),
+        Catch::StartsWith("texture.image: cannot read \"" + text + "\": not an image"));
 
     // Through the CLI, a relative path is taken beside the input file.
     const std::string dir = cg::test::output_path("texdir");
     std::filesystem::create_directories(dir);
-    std::filesystem::copy_file(png, dir + "/beside.png", std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(png, dir + "/beside.png",
+                               std::filesystem::copy_options::overwrite_existing);
     {
         std::ofstream f(dir + "/in.json");
         f << R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0.75, 0.25, 0],
@@ -476,44 +493,83 @@ TEST_CASE("texture-map: image files are read with their first row at v = 1; bad 
 }
 
 TEST_CASE("texture-map: bad input is refused with the field named", "[rays][texture-map][errors]") {
-    const std::string plane = R"("surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]})";
+    const std::string plane =
+        R"("surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]})";
     const std::string grid = R"({"grid": {"width": 2, "height": 2, "texels": [[0, 1], [1, 0]]}})";
     // Off a plane a point is projected onto it; off any other surface it is refused.
     CHECK(run("{" + plane + R"(, "point": [0.25, 0.5, 1], "texture": )" + grid + "}")["uv"] ==
           cg::json::parse("[0.25, 0.5]"));
-    CHECK_THAT(error_of(R"({"surface": {"type": "sphere", "params": {"r": 1}}, "point": [0, 0, 0], "texture": )" + grid + "}"),
-               Catch::StartsWith("point: must lie on the sphere"));
-    CHECK_THAT(error_of(R"({"surface": {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}, "point": [1, 1, 0], "texture": )" + grid + "}"),
-               Catch::StartsWith("point: must lie inside the triangle"));
-    CHECK_THAT(error_of(R"({"surface": {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "uv": [[0, 0], [1, 1], [2, 2]]}, "point": [0, 0, 0], "texture": )" + grid + "}"),
-               Catch::StartsWith("surface.uv: must not put the three corners on one line"));
-    CHECK_THAT(error_of(R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "u_axis": [0, 0, 2]}, "point": [0, 0, 0], "texture": )" + grid + "}"),
-               Catch::StartsWith("surface.u_axis: must not be parallel to the plane's normal"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 3, "height": 2, "texels": [[0, 1, 0], [1, 0, 1]]}, "filter": "mipmap"}})"),
-               Catch::StartsWith("texture.filter: \"mipmap\" needs a width and height that are powers of two"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 2, "height": 3, "texels": [[0, 1], [1, 0]]}}})"),
-               Catch::StartsWith("texture.grid.texels: must be 3 rows"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 2, "height": 2, "texels": [[0, 1], [1, 0, 1]]}}})"),
-               Catch::StartsWith("texture.grid.texels[1]: must be a row of 2 colours"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 2, "height": 2, "texels": [[0, -1], [1, 0]]}}})"),
-               Catch::StartsWith("texture: texel (1, 1) must be a colour with components in [0, 1e6]"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {}, "grid": {"width": 1, "height": 1, "texels": [[0]]}}})"),
-               Catch::StartsWith("texture: needs exactly one of \"image\""));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {}, "filter": "trilinear"}})"),
-               Catch::StartsWith("texture.filter: must be \"nearest\", \"bilinear\" or \"mipmap\""));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {}, "wrap": "mirror"}})"),
+    CHECK_THAT(
+        error_of(
+            R"({"surface": {"type": "sphere", "params": {"r": 1}}, "point": [0, 0, 0], "texture": )" +
+            grid + "}"),
+        Catch::StartsWith("point: must lie on the sphere"));
+    CHECK_THAT(
+        error_of(
+            R"({"surface": {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}, "point": [1, 1, 0], "texture": )" +
+            grid + "}"),
+        Catch::StartsWith("point: must lie inside the triangle"));
+    CHECK_THAT(
+        error_of(
+            R"({"surface": {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "uv": [[0, 0], [1, 1], [2, 2]]}, "point": [0, 0, 0], "texture": )" +
+            grid + "}"),
+        Catch::StartsWith("surface.uv: must not put the three corners on one line"));
+    CHECK_THAT(
+        error_of(
+            R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "u_axis": [0, 0, 2]}, "point": [0, 0, 0], "texture": )" +
+            grid + "}"),
+        Catch::StartsWith("surface.u_axis: must not be parallel to the plane's normal"));
+    CHECK_THAT(
+        error_of(
+            "{" + plane +
+            R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 3, "height": 2, "texels": [[0, 1, 0], [1, 0, 1]]}, "filter": "mipmap"}})"),
+        Catch::StartsWith(
+            "texture.filter: \"mipmap\" needs a width and height that are powers of two"));
+    CHECK_THAT(
+        error_of(
+            "{" + plane +
+            R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 2, "height": 3, "texels": [[0, 1], [1, 0]]}}})"),
+        Catch::StartsWith("texture.grid.texels: must be 3 rows"));
+    CHECK_THAT(
+        error_of(
+            "{" + plane +
+            R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 2, "height": 2, "texels": [[0, 1], [1, 0, 1]]}}})"),
+        Catch::StartsWith("texture.grid.texels[1]: must be a row of 2 colours"));
+    CHECK_THAT(
+        error_of(
+            "{" + plane +
+            R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 2, "height": 2, "texels": [[0, -1], [1, 0]]}}})"),
+        Catch::StartsWith("texture: texel (1, 1) must be a colour with components in [0, 1e6]"));
+    CHECK_THAT(
+        error_of(
+            "{" + plane +
+            R"(, "point": [0, 0, 0], "texture": {"checker": {}, "grid": {"width": 1, "height": 1, "texels": [[0]]}}})"),
+        Catch::StartsWith("texture: needs exactly one of \"image\""));
+    CHECK_THAT(
+        error_of("{" + plane +
+                 R"(, "point": [0, 0, 0], "texture": {"checker": {}, "filter": "trilinear"}})"),
+        Catch::StartsWith("texture.filter: must be \"nearest\", \"bilinear\" or \"mipmap\""));
+    CHECK_THAT(error_of("{" + plane +
+                        R"(, "point": [0, 0, 0], "texture": {"checker": {}, "wrap": "mirror"}})"),
                Catch::StartsWith("texture.wrap: must be \"repeat\" or \"clamp\""));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {}, "colour": 1}})"),
-               Catch::StartsWith("texture.colour: is not a field of a texture"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {"size": 0}}})"),
-               Catch::StartsWith("texture.checker.size: must be a number of squares from 1 to 4096"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {}}, "footprint": -1})"),
+    CHECK_THAT(
+        error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {}, "colour": 1}})"),
+        Catch::StartsWith("texture.colour: is not a field of a texture"));
+    CHECK_THAT(
+        error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"checker": {"size": 0}}})"),
+        Catch::StartsWith("texture.checker.size: must be a number of squares from 1 to 4096"));
+    CHECK_THAT(error_of("{" + plane +
+                        R"(, "point": [0, 0, 0], "texture": {"checker": {}}, "footprint": -1})"),
                Catch::StartsWith("footprint: must be a size"));
-    CHECK_THAT(error_of("{" + plane + R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 5000, "height": 1, "texels": [[0]]}}})"),
-               Catch::StartsWith("texture.grid.width: must be a number of texels from 1 to 4096"));
+    CHECK_THAT(
+        error_of(
+            "{" + plane +
+            R"(, "point": [0, 0, 0], "texture": {"grid": {"width": 5000, "height": 1, "texels": [[0]]}}})"),
+        Catch::StartsWith("texture.grid.width: must be a number of texels from 1 to 4096"));
 }
 
-TEST_CASE("texture-map: exam problems are answered as the reference says", "[rays][texture-map][exam]") {
+TEST_CASE("texture-map: exam problems are answered as the reference says",
+          "[rays][texture-map][exam]") {
     std::set<std::string> events;
     int mip = 0, degenerate_pole = 0;
     for (std::uint64_t seed = 0; seed < 300; ++seed) {
@@ -530,8 +586,9 @@ TEST_CASE("texture-map: exam problems are answered as the reference says", "[ray
         degenerate_pole += tr.result.frame.singular;
         // The colour from the reference lookup.
         if (in.texture.filter == cg::TexFilter::Bilinear) {
-            const t::LColor c = t::bilinear_ref(in.texture.image, t::wrap_ref(uv.x, in.texture.wrap),
-                                                t::wrap_ref(uv.y, in.texture.wrap), in.texture.wrap);
+            const t::LColor c =
+                t::bilinear_ref(in.texture.image, t::wrap_ref(uv.x, in.texture.wrap),
+                                t::wrap_ref(uv.y, in.texture.wrap), in.texture.wrap);
             CHECK(std::fabs(p.expected["color"][0].get<double>() - c.r) < 1e-12L);
         }
         CHECK(cg::grade(p, p.expected)[0].correct);
@@ -539,7 +596,8 @@ TEST_CASE("texture-map: exam problems are answered as the reference says", "[ray
     }
     CHECK(mip > 20);
     CHECK(degenerate_pole > 5);
-    for (const char* e : {"plane-uv", "sphere-uv", "axial-uv", "triangle-uv", "nearest", "bilinear", "blend"}) {
+    for (const char* e :
+         {"plane-uv", "sphere-uv", "axial-uv", "triangle-uv", "nearest", "bilinear", "blend"}) {
         CAPTURE(e);
         CHECK(events.count(e) == 1);
     }
@@ -550,7 +608,8 @@ TEST_CASE("texture-map: traces are deterministic and stepping back reproduces th
     cg::test::check_replay(algo(), algo().example(), cg::test::kEveryStep);
     cg::test::check_replay(
         algo(),
-        cg::parse_json(R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0.3, 0.6, 0],
+        cg::parse_json(
+            R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0.3, 0.6, 0],
                            "texture": {"checker": {"size": 16}, "filter": "mipmap"}, "footprint": 0.2})"),
         cg::test::kEveryStep);
     for (std::uint64_t seed = 0; seed < 50; ++seed) {

@@ -22,16 +22,30 @@ constexpr LD kPiL = 3.141592653589793238462643383279502884L;
 struct LVec {
     LD x = 0, y = 0, z = 0;
 };
-inline LVec lv(glm::dvec3 v) { return {v.x, v.y, v.z}; }
-inline LVec operator+(LVec a, LVec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline LVec operator-(LVec a, LVec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline LVec operator*(LD s, LVec a) { return {s * a.x, s * a.y, s * a.z}; }
-inline LD dot(LVec a, LVec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline LVec lv(glm::dvec3 v) {
+    return {v.x, v.y, v.z};
+}
+inline LVec operator+(LVec a, LVec b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline LVec operator-(LVec a, LVec b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline LVec operator*(LD s, LVec a) {
+    return {s * a.x, s * a.y, s * a.z};
+}
+inline LD dot(LVec a, LVec b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline LVec cross(LVec a, LVec b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline LD len(LVec a) { return std::sqrt(dot(a, a)); }
-inline LVec normalized(LVec a) { return (1 / len(a)) * a; }
+inline LD len(LVec a) {
+    return std::sqrt(dot(a, a));
+}
+inline LVec normalized(LVec a) {
+    return (1 / len(a)) * a;
+}
 
 // ---- texel lookups ----------------------------------------------------------------------------
 
@@ -124,17 +138,20 @@ inline LD noise_ref(const Perlin& n, LVec p) {
                                  {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
     const LD X = std::floor(p.x), Y = std::floor(p.y), Z = std::floor(p.z);
     const LD x = p.x - X, y = p.y - Y, z = p.z - Z;
-    auto wrap = [](LD c) { return static_cast<int>(((static_cast<long long>(c) % 256) + 256) % 256); };
+    auto wrap = [](LD c) {
+        return static_cast<int>(((static_cast<long long>(c) % 256) + 256) % 256);
+    };
     LD total = 0;
     for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
             for (int c = 0; c < 2; ++c) {
-                const int h = n.perm[(n.perm[(n.perm[wrap(X + a)] + wrap(Y + b)) % 256] +
-                                      wrap(Z + c)) % 256];
+                const int h =
+                    n.perm[(n.perm[(n.perm[wrap(X + a)] + wrap(Y + b)) % 256] + wrap(Z + c)) % 256];
                 const int* g = G[h % 12];
                 const LD ramp = g[0] * (x - a) + g[1] * (y - b) + g[2] * (z - c);
                 // The trilinear weight of corner (a, b, c): a product of fades.
-                const LD w = (a ? fade_ref(x) : 1 - fade_ref(x)) * (b ? fade_ref(y) : 1 - fade_ref(y)) *
+                const LD w = (a ? fade_ref(x) : 1 - fade_ref(x)) *
+                             (b ? fade_ref(y) : 1 - fade_ref(y)) *
                              (c ? fade_ref(z) : 1 - fade_ref(z));
                 total += w * ramp;
             }
