@@ -122,6 +122,8 @@ void SolidTextureAlgo::advance(State& s) {
     const SolidTexture& t = in.texture;
     s.last = s.phase;
     auto finish_point = [&] {
+        // A copied state's list has lost its capacity: room for every point, once.
+        if (s.r.samples.capacity() < in.points.size()) s.r.samples.reserve(in.points.size());
         s.r.samples.push_back(solid_sample(t, s.perlin, in.points[s.next]));
         ++s.next;
         s.phase = s.next < in.points.size() ? Phase::Point : Phase::Done;

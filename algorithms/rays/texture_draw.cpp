@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <vector>
 
 #include "core/format.hpp"
 #include "rays/quadric_mesh.hpp"
@@ -105,21 +106,26 @@ void add_surface(const PreparedUv& p, const UvSurface& s, dvec2 lo, dvec2 hi, in
                 }
         return;
     }
+    // The grid's corners once (each is shared by four faces); a face's centre is their mean.
+    std::vector<dvec3> corner(static_cast<std::size_t>(nu + 1) * (nv + 1));
+    auto at = [&](int i, int j) -> dvec3& {
+        return corner[static_cast<std::size_t>(j) * (nu + 1) + i];
+    };
+    for (int j = 0; j <= nv; ++j)
+        for (int i = 0; i <= nu; ++i)
+            at(i, j) = uv_point(p, {lo.x + (hi.x - lo.x) * i / nu, lo.y + (hi.y - lo.y) * j / nv});
+    scene.faces3.reserve(scene.faces3.size() + static_cast<std::size_t>(nu) * nv);
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {
-            const double u0 = lo.x + (hi.x - lo.x) * i / nu,
-                         u1 = lo.x + (hi.x - lo.x) * (i + 1) / nu;
-            const double v0 = lo.y + (hi.y - lo.y) * j / nv,
-                         v1 = lo.y + (hi.y - lo.y) * (j + 1) / nv;
-            const dvec2 mid{(u0 + u1) / 2, (v0 + v1) / 2};
-            const dvec3 P = uv_point(p, mid);
-            scene.faces3.push_back(
-                {{uv_point(p, {u0, v0}) + offset, uv_point(p, {u1, v0}) + offset,
-                  uv_point(p, {u1, v1}) + offset, uv_point(p, {u0, v1}) + offset},
-                 {Role::Subject, 1.0f, false, rgba(color(mid, P), 1)},
-                 alpha,
-                 false,
-                 true});
+            const dvec2 mid{lo.x + (hi.x - lo.x) * (i + 0.5) / nu,
+                            lo.y + (hi.y - lo.y) * (j + 0.5) / nv};
+            const dvec3 P = 0.25 * (at(i, j) + at(i + 1, j) + at(i + 1, j + 1) + at(i, j + 1));
+            scene.faces3.push_back({{at(i, j) + offset, at(i + 1, j) + offset,
+                                     at(i + 1, j + 1) + offset, at(i, j + 1) + offset},
+                                    {Role::Subject, 1.0f, false, rgba(color(mid, P), 1)},
+                                    alpha,
+                                    false,
+                                    true});
         }
 }
 
@@ -127,7 +133,7 @@ void add_textured_surface(const PreparedUv& p, const UvSurface& s, dvec2 uv, con
                           const void*, Scene& scene) {
     dvec2 lo, hi;
     uv_domain(p, s, uv, lo, hi);
-    const int nu = s.kind == UvKind::Quadric ? 32 : 16, nv = s.kind == UvKind::Quadric ? 16 : 16;
+    const int nu = s.kind == UvKind::Quadric ? 24 : 12, nv = 12;
     add_surface(
         p, s, lo, hi, s.kind == UvKind::Triangle ? 8 : nu, nv,
         [&](dvec2 q, dvec3) { return sample_nearest(t.image, wrap_uv(q, t.wrap), t.wrap).color; },

@@ -366,7 +366,7 @@ TEST_CASE("bump-map: the picture shows both normals and the lit patches", "[rays
     while (!BumpMap::done(s)) BumpMap::step(s, nullptr);
     cg::Scene scene;
     BumpMap::draw(s, scene);
-    CHECK(scene.faces3.size() == 2 * 18 * 18);
+    CHECK(scene.faces3.size() == 2 * 14 * 14);
     std::set<std::string> labels;
     for (const auto& seg : scene.segments3) labels.insert(seg.label);
     CHECK(labels.count("n") == 1);
@@ -374,7 +374,7 @@ TEST_CASE("bump-map: the picture shows both normals and the lit patches", "[rays
     // The bumped patch's faces are not all lit alike; the smooth patch's are.
     std::set<std::uint32_t> bumped, smooth;
     for (std::size_t k = 0; k < scene.faces3.size(); ++k)
-        (k < 18 * 18 ? bumped : smooth).insert(scene.faces3[k].style.rgba);
+        (k < 14 * 14 ? bumped : smooth).insert(scene.faces3[k].style.rgba);
     CHECK(bumped.size() > 20);
     CHECK(smooth.size() == 1);
     CHECK(scene.polygons.size() == 1);  // B along u

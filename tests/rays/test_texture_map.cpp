@@ -629,7 +629,7 @@ TEST_CASE("texture-map: the picture shows the texture, the texels read and the t
     CHECK(scene.grids[0].height == 2);
     CHECK(scene.grids[0].rgba[0] == 0x0000ffffu);  // texel (0, 0): the bottom row's blue
     CHECK(scene.polygons.size() == 4);             // the four texels read
-    CHECK(scene.faces3.size() == 32 * 16);
+    CHECK(scene.faces3.size() == 24 * 12);
     bool u_arrow = false;
     for (const auto& seg : scene.segments3) u_arrow = u_arrow || seg.label == "u";
     CHECK(u_arrow);
