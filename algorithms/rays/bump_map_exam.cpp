@@ -62,14 +62,41 @@ BumpMap::Input BumpMap::exam_input(Rng& rng) {
 std::string BumpMap::question(const Input& in) {
     const HeightField& h = in.height;
     std::string s = "The ";
-    if (in.surface.kind == UvKind::Plane)
+    const UvSurface& f = in.surface;
+    if (f.kind == UvKind::Plane && f.normal == glm::dvec3(0, 0, 1) &&
+        f.u_axis == glm::dvec3(1, 0, 0) && f.scale == 1 && f.origin == glm::dvec3(0.0))
         s += "plane z = 0, parametrised by u = x, v = y (P_u = (1, 0, 0), P_v = (0, 1, 0)),";
+    else if (f.kind == UvKind::Plane)
+        s += "plane through " + num(f.origin) + " with normal " + num(f.normal) + ", u axis " +
+             num(f.u_axis) + " and scale " + num(f.scale) + " (P_u = s·a, P_v = s·(n × a)),";
+    else if (f.kind == UvKind::Triangle)
+        s += "triangle " + num(f.p[0]) + ", " + num(f.p[1]) + ", " + num(f.p[2]) + " with (u, v) " +
+             num(f.uv[0]) + ", " + num(f.uv[1]) + ", " + num(f.uv[2]) + " at its corners,";
+    else if (f.quadric.kind == QuadricKind::Sphere)
+        s +=
+            "sphere " + quadric_equation(f.quadric, false) +
+            ", parametrised by u = ½ + φ/(2π), v = 1 − θ/π (P(u, v) = r (sin θ cos φ, sin θ sin φ, "
+            "cos θ)),";
     else
-        s += std::string("unit sphere ") + quadric_equation(in.surface.quadric, false) +
-             ", parametrised by u = ½ + φ/(2π), v = 1 − θ/π (P(u, v) = (sin θ cos φ, sin θ sin φ, "
-             "cos θ)),";
-    s += " carries the bumps B(u, v) = " + num(h.amplitude) + "·sin(2π·" + num(h.frequency.x) +
-         "u)·sin(2π·" + num(h.frequency.y) + "v). At P = " + num(in.point, 4) +
+        s += std::string(quadric_kind_name(f.quadric.kind)) + " " +
+             quadric_equation(f.quadric, false) + ", parametrised by its angle and height,";
+    switch (h.kind) {
+        case HeightKind::Sines:
+            s += " carries the bumps B(u, v) = " + num(h.amplitude) + "·sin(2π·" +
+                 num(h.frequency.x) + "u)·sin(2π·" + num(h.frequency.y) + "v)";
+            break;
+        case HeightKind::Noise:
+            s += " carries the bumps B(u, v) = " + num(h.amplitude) + "·noise(" +
+                 num(h.frequency.x) + "u, " + num(h.frequency.y) + "v, 0) (Perlin noise, seed " +
+                 std::to_string(h.seed) + ")";
+            break;
+        case HeightKind::Image:
+            s += " carries the bumps B(u, v) = " + num(h.amplitude) + "·grey(the " +
+                 std::to_string(h.image.image.width) + " × " +
+                 std::to_string(h.image.image.height) + " height image, bilinear)";
+            break;
+    }
+    s += ". At P = " + num(in.point, 4) +
          ", give B_u and B_v, the perturbed normal n' = (n + D)/|n + D| with n = P_u × P_v and "
          "D = (B_u (n × P_v) − B_v (n × P_u))/|n| (perturbed_normal), and the angle between n and "
          "n' in degrees (tilt_deg).";

@@ -65,9 +65,9 @@ std::string SolidTextureAlgo::question(const Input& in) {
     const SolidTexture& t = in.texture;
     const glm::dvec3 p = in.points[0];
     if (t.kind == SolidKind::Checker)
-        return "A 3D checker of cube size " + num(t.size) +
-               " is white (c₀) where ⌊x/s⌋ + ⌊y/s⌋ + "
-               "⌊z/s⌋ is even and black (c₁) where it is odd. Give the cube (cells) and the colour "
+        return "A 3D checker of cube size " + num(t.size) + " is c₀ = " + num(t.colors[0]) +
+               " where ⌊x/s⌋ + ⌊y/s⌋ + ⌊z/s⌋ is even and c₁ = " + num(t.colors[1]) +
+               " where it is odd. Give the cube (cells) and the colour "
                "(colors) at P = " +
                num(p) + " (noise: none, null).";
     const Perlin perlin = make_perlin(t.seed);
@@ -82,15 +82,24 @@ std::string SolidTextureAlgo::question(const Input& in) {
                  ", " + std::to_string(Z) +
                  "): " + num(perlin_gradients()[gradient_index(perlin, X, Y, Z)]);
     }
-    std::string s = "Perlin noise at P = " + num(p) +
+    const std::string at = t.frequency == 1
+                               ? "q = P = " + num(p)
+                               : "q = f·P = " + num(t.frequency) + "·" + num(p) + " = " + num(q);
+    std::string s = "Perlin noise at " + at +
                     " with the fade 6t⁵ − 15t⁴ + 10t³ and the corner gradients " + grads +
-                    ". Give the lattice cell (cells), noise(P) = the trilinear blend of the "
-                    "ramps g·(P − corner) (noise), and the colour (colors) of ";
+                    ". Give the lattice cell (cells), noise(q) = the trilinear blend of the "
+                    "ramps g·(q − corner) (noise), and the colour (colors) of ";
     if (t.kind == SolidKind::Wood)
-        s += "wood: t = frac(r + noise(P)), r = √(x² + y²), colour = (1 − t)·white + t·black.";
+        s += "wood: t = frac(r/" + num(t.period) + " + " + num(t.amplitude) +
+             "·noise(q)), r = the distance of P from the axis " + num(t.axis) +
+             ", colour = (1 − t)·c₀ + t·c₁ with c₀ = " + num(t.colors[0]) +
+             ", c₁ = " + num(t.colors[1]) + ".";
     else
-        s += "one-octave marble: t = ½(1 + sin(2π z + |noise(P)|)), colour = (1 − t)·white + "
-             "t·black (noise: give the turbulence |noise(P)|).";
+        s += "marble (" + std::to_string(t.octaves) + " octave" + (t.octaves == 1 ? "" : "s") +
+             "): t = ½(1 + sin(2π P·â/" + num(t.period) + " + " + num(t.amplitude) +
+             "·turbulence(q))), â = " + num(t.axis) +
+             ", colour = (1 − t)·c₀ + t·c₁ with c₀ = " + num(t.colors[0]) +
+             ", c₁ = " + num(t.colors[1]) + " (noise: give the turbulence Σ |noise(2^k q)|/2^k).";
     return s;
 }
 

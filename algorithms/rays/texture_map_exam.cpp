@@ -121,21 +121,35 @@ std::string TextureMap::question(const Input& in) {
                  num(in.surface.p[2]) + " with (u, v) " + num(in.surface.uv[0]) + ", " +
                  num(in.surface.uv[1]) + ", " + num(in.surface.uv[2]) + " at its corners";
             break;
-        case UvKind::Quadric:
-            s += "the " + std::string(quadric_kind_name(in.surface.quadric.kind)) + " " +
-                 quadric_equation(in.surface.quadric, false);
-            if (in.surface.quadric.kind == QuadricKind::Sphere)
+        case UvKind::Quadric: {
+            const Quadric& q = in.surface.quadric;
+            s += "the " + std::string(quadric_kind_name(q.kind)) + " " + quadric_equation(q, false);
+            if (q.world_from_model != glm::dmat4(1.0))
+                s += " (placed by a transform; work in model space)";
+            if (q.kind == QuadricKind::Sphere || q.kind == QuadricKind::Ellipsoid)
                 s += " (u = ½ + atan2(y, x)/(2π), v = 1 − acos(z/r)/π)";
+            else if (std::isfinite(q.zmin) && std::isfinite(q.zmax))
+                s += ", " + num(q.zmin) + " ≤ z ≤ " + num(q.zmax) +
+                     " (u = ½ + atan2(y, x)/(2π), v = (z − zmin)/(zmax − zmin))";
             else
-                s += ", 0 ≤ z ≤ 2 (u = ½ + atan2(y, x)/(2π), v = z/2)";
+                s += " (u = ½ + atan2(y, x)/(2π), v = z)";
             break;
+        }
     }
+    bool grey = true;
+    for (const TexColor& c : t.image.texels) grey = grey && c.x == c.y && c.y == c.z;
     s += " is textured with the " + std::to_string(t.image.width) + " × " +
-         std::to_string(t.image.height) + " grey texture (rows from the top, v = 1, down):";
-    for (int j = t.image.height - 1; j >= 0; --j) {
-        s += " [";
-        for (int i = 0; i < t.image.width; ++i) s += (i ? " " : "") + num(t.image.at(i, j).x);
-        s += "]";
+         std::to_string(t.image.height) + " " + (grey ? "grey " : "") + "texture";
+    if (t.image.width * t.image.height <= 64) {
+        s += " (rows from the top, v = 1, down):";
+        for (int j = t.image.height - 1; j >= 0; --j) {
+            s += " [";
+            for (int i = 0; i < t.image.width; ++i)
+                s += (i ? " " : "") + (grey ? num(t.image.at(i, j).x) : num(t.image.at(i, j)));
+            s += "]";
+        }
+    } else {
+        s += " " + t.source;
     }
     s += std::string(", wrap ") + wrap_id(t.wrap) + ", filter " + filter_id(t.filter);
     if (t.filter == TexFilter::Mipmap)
