@@ -252,7 +252,7 @@ void BumpMap::draw(const State& s, Scene& scene) {
     const double size = texdraw::surface_size(p, in.surface);
     const dvec3 side = unit(frame.P_u) == dvec3(0.0) ? dvec3(1, 0, 0) : unit(frame.P_u);
     const dvec3 offset = (glm::length(uv_point(p, hi) - uv_point(p, lo)) + 0.2 * size) * side;
-    constexpr int kCells = 14;
+    constexpr int kCells = 12;
     texdraw::add_surface(
         p, in.surface, lo, hi, kCells, kCells,
         [&](dvec2 uv, dvec3 P) {

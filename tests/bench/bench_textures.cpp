@@ -88,6 +88,24 @@ void texture_machine(benchmark::State& state, const std::vector<cg::TextureMap::
     state.SetItemsProcessed(state.iterations() * inputs.size());
 }
 
+// The plain arithmetic with the surface prepared beforehand, as the state machine's started
+// states have it (and as a tracer does it): the parametrisation and the lookup only.
+void BM_TextureMap_PlainPrepared(benchmark::State& state) {
+    const auto& inputs = bilinear_inputs();
+    std::vector<cg::PreparedUv> prepared;
+    for (const auto& in : inputs) prepared.push_back(cg::prepare_uv(in.surface));
+    for (auto _ : state) {
+        double sum = 0;
+        for (std::size_t k = 0; k < inputs.size(); ++k) {
+            const cg::UvFrame f = cg::uv_frame(prepared[k], inputs[k].point);
+            sum += cg::lookup(inputs[k].texture, nullptr, f.uv, 0).color.x;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_TextureMap_PlainPrepared)->Unit(benchmark::kMillisecond);
+
 void BM_TextureMap_Plain(benchmark::State& state) {
     texture_plain(state, bilinear_inputs());
 }
@@ -134,6 +152,28 @@ void BM_BumpMap_Plain(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * inputs.size());
 }
 BENCHMARK(BM_BumpMap_Plain)->Unit(benchmark::kMillisecond);
+
+// The same with the surface, its outward normal and the noise's permutation made beforehand.
+void BM_BumpMap_PlainPrepared(benchmark::State& state) {
+    const auto& inputs = bump_inputs();
+    std::vector<cg::PreparedUv> prepared;
+    std::vector<glm::dvec3> outward;
+    for (const auto& in : inputs) {
+        prepared.push_back(cg::prepare_uv(in.surface));
+        outward.push_back(cg::outward_normal(prepared.back(), in.point));
+    }
+    const cg::Perlin perlin = cg::make_perlin(0);
+    for (auto _ : state) {
+        double sum = 0;
+        for (std::size_t k = 0; k < inputs.size(); ++k) {
+            const cg::UvFrame f = cg::uv_frame(prepared[k], inputs[k].point);
+            sum += cg::blinn_bump(f, outward[k], inputs[k].height, perlin).perturbed.x;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * inputs.size());
+}
+BENCHMARK(BM_BumpMap_PlainPrepared)->Unit(benchmark::kMillisecond);
 
 void BM_BumpMap_StateMachine(benchmark::State& state) {
     static const auto states = started<cg::BumpMap>(bump_inputs());

@@ -366,7 +366,7 @@ TEST_CASE("bump-map: the picture shows both normals and the lit patches", "[rays
     while (!BumpMap::done(s)) BumpMap::step(s, nullptr);
     cg::Scene scene;
     BumpMap::draw(s, scene);
-    CHECK(scene.faces3.size() == 2 * 14 * 14);
+    CHECK(scene.faces3.size() == 2 * 12 * 12);
     std::set<std::string> labels;
     for (const auto& seg : scene.segments3) labels.insert(seg.label);
     CHECK(labels.count("n") == 1);
@@ -374,8 +374,8 @@ TEST_CASE("bump-map: the picture shows both normals and the lit patches", "[rays
     // The bumped patch's faces are not all lit alike; the smooth patch's are.
     std::set<std::uint32_t> bumped, smooth;
     for (std::size_t k = 0; k < scene.faces3.size(); ++k)
-        (k < 14 * 14 ? bumped : smooth).insert(scene.faces3[k].style.rgba);
-    CHECK(bumped.size() > 20);
+        (k < 12 * 12 ? bumped : smooth).insert(scene.faces3[k].style.rgba);
+    CHECK(bumped.size() > 8);
     CHECK(smooth.size() == 1);
     CHECK(scene.polygons.size() == 1);  // B along u
 }
