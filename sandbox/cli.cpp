@@ -15,6 +15,7 @@
 #include "io/registry.hpp"
 #include "io/worked.hpp"
 #include "rays/rt_scene_json.hpp"
+#include "rays/texture_json.hpp"
 #include "viewer/app.hpp"
 #include "viewer/gl.hpp"
 
@@ -46,7 +47,9 @@ std::string source_name(const std::string& path) { return path == "-" ? "<stdin>
 json load_input(const Algorithm& algorithm, const std::string& path) {
     if (path.empty()) return algorithm.example();
     try {
-        return parse_json(read_text_file(path));
+        json j = parse_json(read_text_file(path));
+        if (path != "-") rebase_image_paths(j, folder_of(path));  // images beside the file
+        return j;
     } catch (const InputError& e) {
         fail(source_name(path), e);
     }
@@ -238,7 +241,9 @@ int cmd_render(const Registry& registry, const RenderOptions& o) {
     if (!o.checkpoint_path.empty()) {
         source = source_name(o.checkpoint_path);
         try {
-            c = checkpoint_from_json(parse_json(read_text_file(o.checkpoint_path)), registry);
+            json j = parse_json(read_text_file(o.checkpoint_path));
+            rebase_image_paths(j, folder_of(o.checkpoint_path));  // images beside the file
+            c = checkpoint_from_json(j, registry);
         } catch (const InputError& e) {
             fail(source, e);
         }
@@ -297,6 +302,7 @@ int cmd_render_scene(const SceneRenderOptions& o) {
     rt::Scene scene;
     try {
         j = parse_json(read_text_file(o.scene_path));
+        if (o.scene_path != "-") rebase_image_paths(j, folder_of(o.scene_path));
         if (!o.size.empty()) {
             int width = 0, height = 0;
             char x = 0, extra = 0;

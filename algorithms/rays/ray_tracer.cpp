@@ -31,7 +31,7 @@ const Spec& RayTracer::spec() {
             "    colour(i, j) ← trace(primary ray, depth 0)",
             "trace(ray, depth):",
             "    nearest hit P, normal n (t > ε); no hit: return the background",
-            "    c ← k_a I_a",
+            "    k_a, k_d, n ← textured, bumped at P (if the material says);  c ← k_a I_a",
             "    for each light L with n·l > 0: cast a shadow ray P → L",
             "        unblocked: c += att (k_d (n·l) + k_s (r·v)^p) I_L",
             "    if depth < max depth:",
@@ -44,6 +44,8 @@ const Spec& RayTracer::spec() {
             {"row", "a row of pixels is computed"},
             {"primary", "the primary ray from the eye through the pixel is cast"},
             {"hit", "the nearest intersection: its point, normal and the ambient term"},
+            {"texture",
+             "the hit's textures: (u, v) and the texel lookup, the solid texture, the bumped normal"},
             {"miss", "the ray hits nothing: it returns the background colour"},
             {"lit", "the shadow ray reaches the light: its diffuse and specular terms are added"},
             {"shadowed", "the shadow ray is blocked: the point is in this light's shadow"},
@@ -77,7 +79,8 @@ const char* event_id(Event e) {
                                 "total-internal-reflection",
                                 "depth-limit",
                                 "return",
-                                "colour"};
+                                "colour",
+                                "texture"};
     return ids[static_cast<int>(e)];
 }
 
@@ -106,6 +109,8 @@ int event_line(Event e) {
             return 9;
         case Event::Return:
             return 12;
+        case Event::Texture:
+            return 6;
         case Event::None:
             break;
     }
@@ -267,12 +272,29 @@ void RayTracer::advance_tree(State& s) {
                     return;
                 }
                 const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
-                f.c = m.ka * sc.ambient;
-                f.next = Next::Light;
+                // The primary ray of a pixel carries its differential (for mipmaps), as in
+                // rt::pixel_color.
+                const bool pixel_ray = f.node == 0 && !in.explicit_ray;
+                const rt::RayDifferential diff = rt::pixel_differential(p.view, s.pixel_i, s.pixel_j);
+                rt::SurfaceDetail detail;
+                const bool textured = m.tex.any();
+                ray.surface = rt::surface_at(sc, p, ray.hit, ray.origin, ray.direction,
+                                             pixel_ray ? &diff : nullptr,
+                                             textured ? &detail : nullptr);
+                if (textured) {
+                    ray.detail = static_cast<int>(s.details.size());
+                    s.details.push_back(detail);
+                }
+                f.c = ray.surface.ka * sc.ambient;
+                f.next = textured ? Next::Texture : Next::Light;
                 f.light = 0;
                 s.last_event = Event::Hit;
                 return;
             }
+            case Next::Texture:  // the lookup was made with the hit; this step shows it
+                f.next = Next::Light;
+                s.last_event = Event::Texture;
+                return;
             case Next::Light: {
                 if (f.light >= static_cast<int>(sc.lights.size())) {
                     f.next = Next::Secondary;
@@ -281,7 +303,8 @@ void RayTracer::advance_tree(State& s) {
                 const int k = f.light++;
                 const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
                 const dvec3 v = -unit(ray.direction);
-                s.last_term = rt::light_term(sc, sc.lights[k], m, ray.hit.point, ray.hit.normal, v);
+                s.last_term = rt::light_term(sc, sc.lights[k], ray.surface.kd, m, ray.hit.point,
+                                             ray.surface.normal, v);
                 const rt::LightTerm& lt = s.last_term;
                 if (!lt.facing) {
                     s.last_event = Event::LightBehind;
@@ -442,6 +465,55 @@ void narrate_csg_hit(const rt::Object& o, const PreparedCsg& p, const RayTracer:
     info.vars.push_back({"CSG segments", csg_spans_text(lists.back())});
 }
 
+// The texture step: what the hit's material did to k_a, k_d and the normal.
+void narrate_texture(const rt::Scene& sc, const rt::SurfaceDetail& d, const RayTracer::RayNode& n,
+                     StepInfo& info) {
+    const rt::Material& m = sc.materials[sc.objects[n.hit.object].material];
+    std::string text, math;
+    auto add = [&](std::string name, Value v) {
+        info.vars.push_back({std::move(name), std::move(v)});
+    };
+    if (d.textured) {
+        const TextureLookup& l = d.lookup;
+        text = "Texture: (u, v) = " + num(d.frame.uv, 4) + " → texel (" +
+               std::to_string(l.taps.texel[0].x) + ", " + std::to_string(l.taps.texel[0].y) +
+               ") of the " + std::to_string(m.tex.texture.image.width) + "×" +
+               std::to_string(m.tex.texture.image.height) + " " + m.tex.texture.source + ", " +
+               filter_id(m.tex.texture.filter) +
+               (m.tex.texture.filter == TexFilter::Mipmap
+                    ? " (footprint " + num(d.footprint, 3) + ", λ = " + num(l.lambda, 3) + ")"
+                    : "") +
+               ": T = " + num(l.color, 4) + ". ";
+        math = "T(" + tex(d.frame.uv, 4) + ") = " + tex(l.color, 4);
+        add("uv", vec(d.frame.uv));
+        add("texel", std::vector<double>{double(l.taps.texel[0].x), double(l.taps.texel[0].y)});
+        add("T", vec(l.color));
+    }
+    if (d.solid) {
+        text = std::string("Solid texture (") + solid_kind_id(m.tex.solid.kind) + ") at " +
+               num(d.solid_point, 4) +
+               (uses_noise(m.tex.solid.kind) ? ": noise " + num(d.solid_sample.noise, 4) : "") +
+               ", mix " + num(d.solid_sample.t, 4) + ": T = " + num(d.solid_sample.color, 4) + ". ";
+        math = "T = (1 - t)\\,c_0 + t\\,c_1 = " + tex(d.solid_sample.color, 4);
+        add("solid point", vec(d.solid_point));
+        add("T", vec(d.solid_sample.color));
+    }
+    if (d.textured || d.solid)
+        text += "k_a = " + num(n.surface.ka, 4) + ", k_d = " + num(n.surface.kd, 4) + ". ";
+    if (d.bumped) {
+        text += "Bump: B_u = " + num(d.bump.B_u, 4) + ", B_v = " + num(d.bump.B_v, 4) +
+                ", the normal " + num(n.hit.normal, 4) + " becomes " + num(n.surface.normal, 4) +
+                " for the lighting.";
+        if (!math.empty()) math += ",\\; ";
+        math += "n' = n + \\frac{B_u (n \\times P_v) - B_v (n \\times P_u)}{|n|}";
+        add("B_u", d.bump.B_u);
+        add("B_v", d.bump.B_v);
+        add("n'", vec(n.surface.normal));
+    }
+    info.narration = text;
+    info.math = math;
+}
+
 }  // namespace
 
 void RayTracer::narrate(const State& s, StepInfo& info) {
@@ -506,8 +578,9 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
                 " at t = " + num(n.hit.t, 6) + ": P = " + num(n.hit.point, 4) +
                 ", n = " + num(n.hit.normal, 4) +
                 (n.hit.entering ? "" : " (from inside: the normal is turned to face the ray)") +
-                ". Material " + m.name + "; ambient k_a I_a = " + num(m.ka * sc.ambient, 4) + ".";
-            info.math = "c = k_a I_a = " + tex(m.ka * sc.ambient, 4);
+                ". Material " + m.name + (n.detail >= 0 ? " (textured: k_a after its texture)" : "") +
+                "; ambient k_a I_a = " + num(n.surface.ka * sc.ambient, 4) + ".";
+            info.math = "c = k_a I_a = " + tex(n.surface.ka * sc.ambient, 4);
             if (sc.objects[n.hit.object].kind == rt::ObjectKind::Csg)
                 narrate_csg_hit(sc.objects[n.hit.object], *s.prepared->objects[n.hit.object].csg,
                                 n, info);
@@ -517,6 +590,9 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
             add("n", vec(n.hit.normal));
             break;
         }
+        case Event::Texture:
+            narrate_texture(sc, s.details[n.detail], n, info);
+            break;
         case Event::Lit:
         case Event::Shadowed:
         case Event::LightBehind: {
@@ -778,6 +854,12 @@ void draw_tree(const RayTracer::State& s, double extent, Scene& scene) {
                                    active ? "n" : "",
                                    {Role::Neutral, 1.5f},
                                    true});
+        if (n.detail >= 0 && s.details[n.detail].bumped)  // the bumped shading normal
+            scene.segments3.push_back({n.hit.point,
+                                       n.hit.point + 0.12 * extent * n.surface.normal,
+                                       active ? "n'" : "",
+                                       {Role::Active, 1.5f},
+                                       true});
         if (n.returned && (active || k == 0))
             scene.labels3.push_back({n.hit.point, num(n.color, 3), {Role::Neutral}});
     }
@@ -858,6 +940,7 @@ RayTracer::Result RayTracer::result(const State& s) {
         r.pixel_j = s.pixel_j;
         r.color = s.pixel_color;
         r.tree = s.tree;
+        r.details = s.details;
     } else {
         r.image = s.image.pixels();
     }

@@ -55,6 +55,8 @@ struct RayTracer {
         int depth = 0;    // reflections/refractions that led to it
         glm::dvec3 origin{0.0}, direction{0.0};
         rt::Hit hit;            // a primary, mirror or refracted ray's nearest hit
+        rt::Surface surface;    // ... its k_a, k_d and shading normal (textured, bumped)
+        int detail = -1;        // ... and its texture lookup in State::details (-1: none)
         bool traced = false;    // its hit (or its blocker) is known
         int light = -1;         // a shadow ray's light
         int blocker = -1;       // ... and the object blocking it (-1: the light is seen)
@@ -67,7 +69,7 @@ struct RayTracer {
     };
 
     // A ray being traced, and what comes next for it.
-    enum class Next : std::uint8_t { Cast, Light, Secondary, Refract, Return };
+    enum class Next : std::uint8_t { Cast, Texture, Light, Secondary, Refract, Return };
     struct Frame {
         int node = 0;
         Next next = Next::Cast;
@@ -111,7 +113,8 @@ struct RayTracer {
         TotalInternal,
         DepthLimit,
         Return,
-        Colour
+        Colour,
+        Texture
     };
 
     struct State {
@@ -127,6 +130,7 @@ struct RayTracer {
         // ray-tree
         int pixel_i = 0, pixel_j = 0;
         std::vector<RayNode> tree;
+        std::vector<rt::SurfaceDetail> details;  // the texture lookups of textured hits
         std::vector<Frame> stack;
         int active = -1;             // the ray the last step worked on
         rt::LightTerm last_term;     // the last light step's terms
@@ -147,6 +151,7 @@ struct RayTracer {
         int pixel_i = 0, pixel_j = 0;
         rt::Color color{0.0};
         std::vector<RayNode> tree;
+        std::vector<rt::SurfaceDetail> details;
         bool operator==(const Result&) const = default;
     };
 
@@ -159,6 +164,7 @@ struct RayTracer {
     static void draw(const State& s, Scene& scene);
     static std::size_t bytes(const State& s) {
         return s.image.bytes() + s.tree.capacity() * sizeof(RayNode) +
+               s.details.capacity() * sizeof(rt::SurfaceDetail) +
                s.stack.capacity() * sizeof(Frame);
     }
 

@@ -151,6 +151,21 @@ struct JsonIo<RayTracer> {
                 node["t"] = n.hit.object >= 0 ? json(n.hit.t) : json(nullptr);
                 if (n.total_internal) node["total_internal_reflection"] = true;
             }
+            if (n.detail >= 0) {  // the texture lookup at this ray's hit
+                const rt::SurfaceDetail& d = r.details[n.detail];
+                json t = json::object();
+                if (d.textured || d.bumped) t["uv"] = to_json(d.frame.uv);
+                if (d.textured) {
+                    t["texel"] = json{d.lookup.taps.texel[0].x, d.lookup.taps.texel[0].y};
+                    t["color"] = to_json(d.lookup.color);
+                }
+                if (d.solid) {
+                    t["solid_point"] = to_json(d.solid_point);
+                    t["color"] = to_json(d.solid_sample.color);
+                }
+                if (d.bumped) t["perturbed_normal"] = to_json(n.surface.normal);
+                node["texture"] = std::move(t);
+            }
             node["color"] = to_json(n.color);
             node["weight"] = to_json(n.weight);
             tree.push_back(std::move(node));

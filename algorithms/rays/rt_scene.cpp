@@ -195,6 +195,7 @@ void validate(const Scene& s) {
                 break;
         }
     }
+    validate_textures(s);
 }
 
 // ---- [prepare and the camera] ---------------------------------------------------------------
@@ -253,6 +254,7 @@ Prepared prepare(const Scene& s) {
         p.objects.push_back(q);
     }
     p.epsilon = 1e-7 * scale;
+    p.textures = prepare_textures(s);
     return p;
 }
 
@@ -324,6 +326,11 @@ int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double
 
 LightTerm light_term(const Scene& s, const Light& light, const Material& m, dvec3 point, dvec3 n,
                      dvec3 v) {
+    return light_term(s, light, m.kd, m, point, n, v);
+}
+
+LightTerm light_term(const Scene& s, const Light& light, const Color& kd, const Material& m,
+                     dvec3 point, dvec3 n, dvec3 v) {
     LightTerm t;
     if (light.directional) {
         t.l = -unit(light.direction);
@@ -347,7 +354,7 @@ LightTerm light_term(const Scene& s, const Light& light, const Material& m, dvec
     t.facing = t.n_dot_l > 0;
     if (t.facing) {
         const Color I = t.attenuation * light.intensity;
-        t.diffuse = I * m.kd * t.n_dot_l;
+        t.diffuse = I * kd * t.n_dot_l;
         t.specular = I * m.ks * std::pow(std::max(t.spec_dot, 0.0), m.shininess);
     }
     return t;
@@ -389,14 +396,15 @@ SecondaryRay transmitted_ray(const Prepared& p, const Hit& h, dvec3 d, double io
 // ---- [the plain tracer] ---------------------------------------------------------------------
 
 Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
-            RayCounts& counts) {
+            RayCounts& counts, const RayDifferential* diff) {
     const Hit h = nearest_hit(p, origin, d);
     if (h.object < 0) return s.background;
     const Material& m = s.materials[p.objects[h.object].material];
     const dvec3 v = -unit(d);
-    Color c = m.ka * s.ambient;
+    const Surface sf = surface_at(s, p, h, origin, d, diff);  // textured k_a, k_d and normal
+    Color c = sf.ka * s.ambient;
     for (const Light& light : s.lights) {
-        const LightTerm lt = light_term(s, light, m, h.point, h.normal, v);
+        const LightTerm lt = light_term(s, light, sf.kd, m, h.point, sf.normal, v);
         if (!lt.facing) continue;  // a light behind the surface needs no shadow ray
         if (s.settings.shadows) {
             ++counts.shadow;
@@ -425,7 +433,8 @@ Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
 Color pixel_color(const Scene& s, const Prepared& p, int i, int j, RayCounts& counts) {
     ++counts.primary;
     const dvec3 P = screen_point(p.view, i + 0.5, j + 0.5);
-    return trace(s, p, p.view.eye, P - p.view.eye, 0, counts);
+    const RayDifferential diff = pixel_differential(p.view, i, j);
+    return trace(s, p, p.view.eye, P - p.view.eye, 0, counts, &diff);
 }
 
 std::uint32_t to_rgba8(Color c) {

@@ -42,6 +42,7 @@
 #include "core/shared.hpp"
 #include "rays/csg.hpp"
 #include "rays/quadric.hpp"
+#include "rays/rt_texture.hpp"
 
 namespace cg::rt {
 
@@ -54,6 +55,7 @@ struct Material {
     Color kr{0.0};                    // share of the mirror ray's colour, ≥ 0
     Color kt{0.0};                    // share of the refracted ray's colour, ≥ 0
     double ior = 1.0;                 // refraction index inside the object, > 0
+    MaterialTextures tex;             // texture, solid texture, bump (rays/rt_texture.hpp)
     bool operator==(const Material&) const = default;
 };
 
@@ -77,6 +79,7 @@ struct Object {
     glm::dvec3 p0{0.0}, p1{0.0}, p2{0.0};  // Triangle vertices; Plane: p0 is a point on it
     glm::dvec3 normal{0, 0, 1};            // Plane: as given (any length > 0)
     CsgTree csg;                           // Csg: the tree (rays/rt_csg.hpp)
+    ObjectUv uv;                           // its texture parametrisation (rays/rt_texture.hpp)
     bool operator==(const Object&) const = default;
 };
 
@@ -158,6 +161,7 @@ struct Prepared {
     View view;
     std::vector<PreparedObject> objects;
     double epsilon = 1e-9;  // the offset of secondary rays, scaled to the scene's size
+    PreparedTextures textures;
     bool operator==(const Prepared&) const = default;
 };
 // Precondition: validate(s) does not throw.
@@ -209,6 +213,9 @@ struct LightTerm {
 };
 LightTerm light_term(const Scene& s, const Light& light, const Material& m, glm::dvec3 point,
                      glm::dvec3 n, glm::dvec3 v);
+// The same with the diffuse colour k_d given (a textured surface's, rays/rt_texture.hpp).
+LightTerm light_term(const Scene& s, const Light& light, const Color& kd, const Material& m,
+                     glm::dvec3 point, glm::dvec3 n, glm::dvec3 v);
 // The shadow ray's start: the hit point nudged off the surface toward the light.
 glm::dvec3 offset_point(const Prepared& p, glm::dvec3 point, glm::dvec3 toward);
 
@@ -250,9 +257,10 @@ struct RayCounts {
 
 // ---- the plain tracer ---------------------------------------------------------------------
 
-// The colour a ray returns; `depth` is how many reflections/refractions led to it.
+// The colour a ray returns; `depth` is how many reflections/refractions led to it; `diff` is a
+// primary ray's differential, for mipmapped textures (rays/rt_texture.hpp).
 Color trace(const Scene& s, const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, int depth,
-            RayCounts& counts);
+            RayCounts& counts, const RayDifferential* diff = nullptr);
 Color pixel_color(const Scene& s, const Prepared& p, int i, int j, RayCounts& counts);
 std::uint32_t to_rgba8(Color c);  // 0xRRGGBBAA, alpha 255
 

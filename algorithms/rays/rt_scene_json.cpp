@@ -4,6 +4,7 @@
 
 #include "rays/csg_json.hpp"
 #include "rays/rays_json.hpp"
+#include "rays/texture_json.hpp"
 
 namespace cg::rt {
 
@@ -92,8 +93,42 @@ Settings settings_from(const Reader& r) {
     return s;
 }
 
+// A material's "texture", "solid_texture" and "bump" (rays/rt_texture.hpp).
+void material_textures_from(const Reader& r, MaterialTextures& t) {
+    if (r.has("texture")) {
+        t.has_texture = true;
+        t.texture = texture_json::texture(r.object("texture"));
+    }
+    if (r.has("solid_texture")) {
+        t.has_solid = true;
+        t.solid = texture_json::solid(r.object("solid_texture"));
+    }
+    if (r.has("bump")) {
+        t.has_bump = true;
+        t.bump = texture_json::height(r.object("bump"));
+    }
+}
+
+// An object's texture parametrisation: a plane's "u_axis" and "uv_scale", a triangle's "uv".
+void object_uv_from(const Reader& o, Object& obj) {
+    if (o.has("u_axis")) {
+        obj.uv.has_u_axis = true;
+        obj.uv.u_axis = o.point3("u_axis");
+    }
+    if (o.has("uv_scale")) obj.uv.scale = o.number("uv_scale");
+    if (o.has("uv")) {
+        const std::vector<glm::dvec2> uv = o.points2("uv");
+        if (uv.size() != 3)
+            throw InputError(o.field("uv"), "must be 3 (u, v) pairs, one per vertex, got " +
+                                                std::to_string(uv.size()));
+        obj.uv.has_uv = true;
+        obj.uv.uv = {uv[0], uv[1], uv[2]};
+    }
+}
+
 Material material_from(const Reader& r) {
-    r.only({"name", "ka", "kd", "ks", "shininess", "kr", "kt", "ior"});
+    r.only({"name", "ka", "kd", "ks", "shininess", "kr", "kt", "ior", "texture", "solid_texture",
+            "bump"});
     Material m;
     m.name = r.string("name");
     m.ka = optional_color(r, "ka", m.ka);
@@ -103,6 +138,7 @@ Material material_from(const Reader& r) {
     m.kr = optional_color(r, "kr", m.kr);
     m.kt = optional_color(r, "kt", m.kt);
     if (r.has("ior")) m.ior = r.number("ior");
+    material_textures_from(r, m.tex);
     return m;
 }
 
@@ -151,13 +187,15 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
                              "is missing: every object needs a material's name");
         obj.material = material_index(o, materials);
         if (type == "plane") {
-            o.only({"type", "name", "material", "point", "normal"});
+            o.only({"type", "name", "material", "point", "normal", "u_axis", "uv_scale"});
+            object_uv_from(o, obj);
             obj.kind = ObjectKind::Plane;
             obj.p0 = o.point3("point");
             obj.normal = o.point3("normal");
             s.objects.push_back(obj);
         } else if (type == "triangle") {
-            o.only({"type", "name", "material", "vertices"});
+            o.only({"type", "name", "material", "vertices", "uv"});
+            object_uv_from(o, obj);
             obj.kind = ObjectKind::Triangle;
             const std::vector<glm::dvec3> p = o.points3("vertices");
             if (p.size() != 3)
@@ -167,8 +205,16 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
             obj.field = o.field("vertices");
             s.objects.push_back(obj);
         } else if (type == "mesh") {
-            o.only({"type", "name", "material", "vertices", "triangles"});
+            o.only({"type", "name", "material", "vertices", "triangles", "uv"});
             const std::vector<glm::dvec3> p = o.points3("vertices");
+            std::vector<glm::dvec2> uv;  // per vertex (optional)
+            if (o.has("uv")) {
+                uv = o.points2("uv");
+                if (uv.size() != p.size())
+                    throw InputError(o.field("uv"), "must give one (u, v) per vertex: " +
+                                                        std::to_string(p.size()) + " vertices, " +
+                                                        std::to_string(uv.size()) + " pairs");
+            }
             const json& tris = list(o, "triangles", "triangles [i, j, k]");
             if (tris.empty())
                 throw InputError(o.field("triangles"), "must list at least one triangle");
@@ -195,7 +241,9 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
                                                         std::to_string(p.size() - 1) + ", got " +
                                                         describe(ix[k]));
                     *corner[k] = p[ix[k].get<std::size_t>()];
+                    if (!uv.empty()) tri.uv.uv[k] = uv[ix[k].get<std::size_t>()];
                 }
+                tri.uv.has_uv = !uv.empty();
                 s.objects.push_back(tri);
             }
         } else if (type == "csg") {
@@ -294,15 +342,20 @@ json scene_to_json(const Scene& s) {
                   {"refractions", s.settings.refractions},
                   {"model", s.settings.model == Model::Phong ? "phong" : "blinn-phong"}};
     json materials = json::array();
-    for (const Material& m : s.materials)
-        materials.push_back(json{{"name", m.name},
-                                 {"ka", colour(m.ka)},
-                                 {"kd", colour(m.kd)},
-                                 {"ks", colour(m.ks)},
-                                 {"shininess", nice_number(m.shininess)},
-                                 {"kr", colour(m.kr)},
-                                 {"kt", colour(m.kt)},
-                                 {"ior", nice_number(m.ior)}});
+    for (const Material& m : s.materials) {
+        json mj{{"name", m.name},
+                {"ka", colour(m.ka)},
+                {"kd", colour(m.kd)},
+                {"ks", colour(m.ks)},
+                {"shininess", nice_number(m.shininess)},
+                {"kr", colour(m.kr)},
+                {"kt", colour(m.kt)},
+                {"ior", nice_number(m.ior)}};
+        if (m.tex.has_texture) mj["texture"] = texture_json::texture_json(m.tex.texture);
+        if (m.tex.has_solid) mj["solid_texture"] = texture_json::solid_json(m.tex.solid);
+        if (m.tex.has_bump) mj["bump"] = texture_json::height_json(m.tex.bump);
+        materials.push_back(std::move(mj));
+    }
     json lights = json::array();
     for (const Light& l : s.lights) {
         json j = json::object();
@@ -326,10 +379,15 @@ json scene_to_json(const Scene& s) {
                 j = json{{"type", "plane"},
                          {"point", nice_point(o.p0)},
                          {"normal", nice_point(o.normal)}};
+                if (o.uv.has_u_axis) j["u_axis"] = nice_point(o.uv.u_axis);
+                if (o.uv.scale != 1) j["uv_scale"] = nice_number(o.uv.scale);
                 break;
             case ObjectKind::Triangle:
                 j = json{{"type", "triangle"},
                          {"vertices", {nice_point(o.p0), nice_point(o.p1), nice_point(o.p2)}}};
+                if (o.uv.has_uv)
+                    j["uv"] = {nice_point(o.uv.uv[0]), nice_point(o.uv.uv[1]),
+                               nice_point(o.uv.uv[2])};
                 break;
             case ObjectKind::Csg:
                 j = json{{"type", "csg"}, {"tree", csg_json::tree_json(o.csg)}};

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "rays/texture_json.hpp"
 #include "viewer/export.hpp"
 #include "viewer/flow.hpp"
 #include "viewer/im_colour.hpp"
@@ -37,8 +38,9 @@ void save_checkpoint(Session& s) {
 
 void open_checkpoint(Session& s) {
     try {
-        const Checkpoint c =
-            checkpoint_from_json(parse_json(read_text_file(s.checkpoint_path)), s.registry);
+        json j = parse_json(read_text_file(s.checkpoint_path));
+        rebase_image_paths(j, folder_of(s.checkpoint_path));  // texture images beside the file
+        const Checkpoint c = checkpoint_from_json(j, s.registry);
         s.set_status("Opened " + s.checkpoint_path, false);
         s.load(c);                       // after: an unknown lesson in it replaces the message
     } catch (const std::exception& e) {  // InputError names the field; JSON errors the place

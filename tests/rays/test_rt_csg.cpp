@@ -299,6 +299,26 @@ TEST_CASE("ray-tracer CSG: scene files with CSG objects", "[rays][ray-tracer][cs
     CHECK_THAT(error_of(R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]}, "materials": [{"name": "m"}],
                             "objects": [{"type": "csg", "material": "m", "params": {}}]})"),
                Catch::StartsWith("objects[0].params: is not a known field"));
+    // Textures: a solid texture colours a CSG object (it needs only the point); an image
+    // texture or a bump needs (u, v), which a CSG surface pieced from its leaves does not have.
+    auto with_material = [&](const std::string& extra) {
+        std::string s = ok;
+        const auto at = s.find(R"("shininess": 10)") + std::string(R"("shininess": 10)").size();
+        return s.substr(0, at) + ", " + extra + s.substr(at);
+    };
+    CHECK(error_of(with_material(R"("solid_texture": {"type": "checker", "size": 0.25})")) ==
+          "(accepted)");
+    CHECK_THAT(error_of(with_material(R"("texture": {"checker": {"size": 4}})")),
+               Catch::StartsWith("objects[0].material: material \"m\" has an image texture, "
+                                 "which needs (u, v) on the surface; a CSG object has none"));
+    CHECK_THAT(error_of(with_material(R"("bump": {"type": "sines", "amplitude": 0.1, "frequency": [4, 4]})")),
+               Catch::StartsWith("objects[0].material: material \"m\" has a bump map"));
+    {  // ... and it shows: the checkered lens differs from the plain one
+        const rt::Image plain = rt::render(scene(ok), 1);
+        const rt::Image checked =
+            rt::render(scene(with_material(R"("solid_texture": {"type": "checker", "size": 0.25})")), 1);
+        CHECK(plain.rgba != checked.rgba);
+    }
     // Written back and read again: the same scene.
     const rt::Scene s = scene(ok);
     const cg::json j = rt::scene_to_json(s);

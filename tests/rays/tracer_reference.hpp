@@ -184,6 +184,8 @@ class ReferenceTracer {
                 n = norm(cross(e1, e2));
                 return t;
             }
+            case rt::ObjectKind::Csg:
+                break;  // the random reference scenes have no CSG objects (test_rt_csg.cpp)
         }
         return INFINITY;
     }
