@@ -198,7 +198,7 @@ TEST_CASE("bump-map: on curved and mirrored surfaces it agrees to the size of th
     CHECK(worst_ratio > 0.01);  // the dropped terms are real, not a test that cannot fail
 }
 
-TEST_CASE("bump-map: a constant height leaves the normal unchanged; the pole has no frame",
+TEST_CASE("bump-map: a constant height leaves the normal unchanged, and the pole has no frame",
           "[rays][bump-map]") {
     SECTION("amplitude 0") {
         const cg::json r = [] {

@@ -437,7 +437,7 @@ TEST_CASE("texture-map: the state machine gives the plain function's answer, bit
     }
 }
 
-TEST_CASE("texture-map: image files are read with their first row at v = 1; bad files are named",
+TEST_CASE("texture-map: image files are read with their first row at v = 1, and bad files are named",
           "[rays][texture-map][errors]") {
     // A 2 × 2 PNG: top row red, green; bottom row blue, white.
     const std::string png = cg::test::output_path("tex-2x2.png");
