@@ -16,6 +16,7 @@
 #include "io/registry.hpp"
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
+#include "rays/tracer_support.hpp"
 #include "rays/tracer_reference.hpp"
 #include "support/process.hpp"
 #include "support/replay.hpp"
@@ -36,35 +37,10 @@ const cg::Algorithm& tracer() {
 }
 
 // A scene from JSON text (the scene file format), validated.
-rt::Scene scene(const std::string& text) {
-    rt::Scene s = rt::scene_from_json(cg::parse_json(text), {"stepping"});
-    rt::validate(s);
-    return s;
-}
+rt::Scene scene(const std::string& text) { return cg::test::scene_of(text); }
 
-// One ray's tree, stepped to the end: the result and the events in order.
-struct Tree {
-    RayTracer::Result result;
-    std::vector<std::string> events;
-};
-
-Tree ray_tree(const rt::Scene& s, dvec3 origin, dvec3 direction) {
-    RayTracer::Input in;
-    in.scene = s;
-    in.granularity = RayTracer::Granularity::RayTree;
-    in.explicit_ray = true;
-    in.ray_origin = origin;
-    in.ray_direction = direction;
-    auto st = RayTracer::start(in);
-    Tree t;
-    while (!RayTracer::done(st)) {
-        cg::StepInfo info;
-        RayTracer::step(st, &info);
-        t.events.push_back(info.event);
-    }
-    t.result = RayTracer::result(st);
-    return t;
-}
+using Tree = cg::test::RayTree;
+using cg::test::ray_tree;
 
 std::string error_of(const std::string& text) {
     try {

@@ -17,6 +17,7 @@
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_csg.hpp"
 #include "rays/rt_scene_json.hpp"
+#include "rays/tracer_support.hpp"
 #include "support/process.hpp"
 
 using cg::RayTracer;
@@ -25,36 +26,10 @@ namespace rt = cg::rt;
 
 namespace {
 
-rt::Scene scene(const std::string& text) {
-    rt::Scene s = rt::scene_from_json(cg::parse_json(text), {"stepping"});
-    rt::validate(s);
-    return s;
-}
+rt::Scene scene(const std::string& text) { return cg::test::scene_of(text); }
 
-struct Tree {
-    RayTracer::Result result;
-    std::vector<cg::StepInfo> steps;
-    std::vector<std::string> events;
-};
-
-Tree ray_tree(const rt::Scene& s, dvec3 origin, dvec3 direction) {
-    RayTracer::Input in;
-    in.scene = s;
-    in.granularity = RayTracer::Granularity::RayTree;
-    in.explicit_ray = true;
-    in.ray_origin = origin;
-    in.ray_direction = direction;
-    auto st = RayTracer::start(in);
-    Tree t;
-    while (!RayTracer::done(st)) {
-        cg::StepInfo info;
-        RayTracer::step(st, &info);
-        t.events.push_back(info.event);
-        t.steps.push_back(info);
-    }
-    t.result = RayTracer::result(st);
-    return t;
-}
+using Tree = cg::test::RayTree;
+using cg::test::ray_tree;
 
 std::string error_of(const std::string& text) {
     try {

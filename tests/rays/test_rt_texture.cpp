@@ -16,6 +16,7 @@
 #include "io/registry.hpp"
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
+#include "rays/tracer_support.hpp"
 #include "rays/texture_reference.hpp"
 #include "support/process.hpp"
 
@@ -26,11 +27,7 @@ namespace rt = cg::rt;
 
 namespace {
 
-rt::Scene scene(const std::string& text) {
-    rt::Scene s = rt::scene_from_json(cg::parse_json(text), {"stepping"});
-    rt::validate(s);
-    return s;
-}
+rt::Scene scene(const std::string& text) { return cg::test::scene_of(text); }
 
 std::string scene_error(const std::string& text) {
     try {
