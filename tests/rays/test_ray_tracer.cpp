@@ -16,8 +16,8 @@
 #include "io/registry.hpp"
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
-#include "rays/tracer_support.hpp"
 #include "rays/tracer_reference.hpp"
+#include "rays/tracer_support.hpp"
 #include "support/process.hpp"
 #include "support/replay.hpp"
 
@@ -37,9 +37,12 @@ const cg::Algorithm& tracer() {
 }
 
 // A scene from JSON text (the scene file format), validated.
-rt::Scene scene(const std::string& text) { return cg::test::scene_of(text); }
+rt::Scene scene(const std::string& text) {
+    return cg::test::scene_of(text);
+}
 
 using Tree = cg::test::RayTree;
+using cg::test::events;
 using cg::test::ray_tree;
 
 std::string error_of(const std::string& text) {
@@ -153,7 +156,7 @@ TEST_CASE("ray-tracer: a ray straight down onto a ball, worked by hand", "[rays]
     const rt::Scene s = scene(kBall);
     const Tree t = ray_tree(s, {0, 0, 5}, {0, 0, -1});
     // t = 4, P = (0, 0, 1), n = l = v = (0, 0, 1): ambient 0.5·0.2, diffuse 0.6, specular 0.3.
-    CHECK(t.events == std::vector<std::string>{"primary", "hit", "lit", "colour"});
+    CHECK(events(t) == std::vector<std::string>{"primary", "hit", "lit", "colour"});
     const auto& root = t.result.tree[0];
     CHECK(root.hit.t == Approx(4).epsilon(1e-15));
     CHECK(root.hit.point.z == Approx(1));
@@ -180,7 +183,7 @@ TEST_CASE("ray-tracer: misses, shadows and lights behind the surface", "[rays][r
     const rt::Scene ball = scene(kBall);
     SECTION("a miss returns the background") {
         const Tree t = ray_tree(ball, {3, 0, 5}, {0, 0, -1});
-        CHECK(t.events == std::vector<std::string>{"primary", "miss", "colour"});
+        CHECK(events(t) == std::vector<std::string>{"primary", "miss", "colour"});
         check_colour(t.result.color, dvec3(0.25));
     }
     SECTION("a ball between the point and the light casts a shadow") {
@@ -190,13 +193,13 @@ TEST_CASE("ray-tracer: misses, shadows and lights behind the surface", "[rays][r
         blocker.quadric.world_from_model[3] = glm::dvec4(0, 0, 3, 1);
         s.objects.push_back(blocker);
         const Tree t = ray_tree(s, {0, 0.2, 2.0}, {0, 0, -1});  // starts below the blocker
-        CHECK(t.events == std::vector<std::string>{"primary", "hit", "shadowed", "colour"});
+        CHECK(events(t) == std::vector<std::string>{"primary", "hit", "shadowed", "colour"});
         check_colour(t.result.color, dvec3(0.1));  // ambient only
         CHECK(t.result.tree[1].blocker == 1);
         // Without shadow rays the light counts again.
         s.settings.shadows = false;
         const Tree off = ray_tree(s, {0, 0.2, 2.0}, {0, 0, -1});
-        CHECK(off.events == std::vector<std::string>{"primary", "hit", "lit", "colour"});
+        CHECK(events(off) == std::vector<std::string>{"primary", "hit", "lit", "colour"});
         CHECK(off.result.rays.shadow == 0);
         CHECK(off.result.color.x > 0.5);
     }
@@ -204,7 +207,7 @@ TEST_CASE("ray-tracer: misses, shadows and lights behind the surface", "[rays][r
         rt::Scene s = ball;
         s.lights[0].position = {0, 0, -10};
         const Tree t = ray_tree(s, {0, 0, 5}, {0, 0, -1});
-        CHECK(t.events == std::vector<std::string>{"primary", "hit", "light-behind", "colour"});
+        CHECK(events(t) == std::vector<std::string>{"primary", "hit", "light-behind", "colour"});
         CHECK(t.result.rays.shadow == 0);
         check_colour(t.result.color, dvec3(0.1));
     }
@@ -232,7 +235,7 @@ TEST_CASE("ray-tracer: a mirror, the depth limit and ray casting", "[rays][ray-t
                    "transform": [[1, 0, 0, 0], [0, 1, 0, 3], [0, 0, 1, -4], [0, 0, 0, 1]]}]})";
     const rt::Scene s = scene(text);
     const Tree t = ray_tree(s, {0, 1, 0}, {0, -1, -1});  // hits the floor at (0, 0, −1)
-    CHECK(t.events ==
+    CHECK(events(t) ==
           std::vector<std::string>{"primary", "hit", "reflect", "hit", "return", "colour"});
     // r = d − 2(d·n)n = (0, 1, −1)/√2, from (0, 0, −1) straight at the ball's centre (0, 3, −4).
     const auto& mirror = t.result.tree[1];
@@ -248,14 +251,14 @@ TEST_CASE("ray-tracer: a mirror, the depth limit and ray casting", "[rays][ray-t
         rt::Scene c = s;
         c.settings.max_depth = 0;
         const Tree ct = ray_tree(c, {0, 1, 0}, {0, -1, -1});
-        CHECK(ct.events == std::vector<std::string>{"primary", "hit", "depth-limit", "colour"});
+        CHECK(events(ct) == std::vector<std::string>{"primary", "hit", "depth-limit", "colour"});
         check_colour(ct.result.color, dvec3(0.0));
     }
     SECTION("reflections off") {
         rt::Scene c = s;
         c.settings.reflections = false;
         const Tree ct = ray_tree(c, {0, 1, 0}, {0, -1, -1});
-        CHECK(ct.events == std::vector<std::string>{"primary", "hit", "colour"});
+        CHECK(events(ct) == std::vector<std::string>{"primary", "hit", "colour"});
     }
     SECTION("the ray_casting setting") {
         auto j = cg::parse_json(text);
@@ -281,8 +284,8 @@ TEST_CASE("ray-tracer: refraction through a glass ball and total internal reflec
     rt::Scene s = scene(text);
     SECTION("through the centre the ray is not bent, in and out") {
         const Tree t = ray_tree(s, {0, 0, 5}, {0, 0, -1});
-        CHECK(t.events == std::vector<std::string>{"primary", "hit", "refract", "hit", "refract",
-                                                   "miss", "return", "return", "colour"});
+        CHECK(events(t) == std::vector<std::string>{"primary", "hit", "refract", "hit", "refract",
+                                                    "miss", "return", "return", "colour"});
         const auto& inside = t.result.tree[1];
         CHECK(inside.kind == RayTracer::RayKind::Refracted);
         CHECK(inside.direction.z == Approx(-1));
@@ -303,8 +306,8 @@ TEST_CASE("ray-tracer: refraction through a glass ball and total internal reflec
     SECTION("from inside at a grazing angle: total internal reflection") {
         // Inside the ball, a ray meeting the surface at sin θ₁ = 0.9 > 1/1.5.
         const Tree t = ray_tree(s, {0.9, -0.2, 0}, {0, 1, 0});
-        REQUIRE(t.events.size() >= 3);
-        CHECK(t.events[2] == "total-internal-reflection");
+        REQUIRE(events(t).size() >= 3);
+        CHECK(events(t)[2] == "total-internal-reflection");
         CHECK(t.result.tree[1].total_internal);
         CHECK(t.result.tree[1].kind == RayTracer::RayKind::Reflected);
     }

@@ -6,9 +6,9 @@
 // written back; the golden lens and die through `cgsandbox render-scene`.
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <algorithm>
 #include <functional>
 #include <set>
 
@@ -26,9 +26,12 @@ namespace rt = cg::rt;
 
 namespace {
 
-rt::Scene scene(const std::string& text) { return cg::test::scene_of(text); }
+rt::Scene scene(const std::string& text) {
+    return cg::test::scene_of(text);
+}
 
 using Tree = cg::test::RayTree;
+using cg::test::events;
 using cg::test::ray_tree;
 
 std::string error_of(const std::string& text) {
@@ -83,8 +86,8 @@ TEST_CASE("ray-tracer CSG: a lens hit by hand, its merge narrated", "[rays][ray-
     // z ∈ [−0.5, 0.5], t ∈ [4.5, 5.5] from (0, 0, 5) down the axis; the hit is t = 4.5 on the
     // sphere at z = −0.5, normal +z.
     const Tree t = ray_tree(s, {0, 0, 5}, {0, 0, -1});
-    REQUIRE(t.events.size() > 2);
-    CHECK(t.events[1] == "hit");
+    REQUIRE(events(t).size() > 2);
+    CHECK(events(t)[1] == "hit");
     const auto& primary = t.result.tree[0];
     CHECK(primary.hit.t == 4.5);
     CHECK(primary.hit.point == dvec3(0, 0, 0.5));
@@ -102,7 +105,7 @@ TEST_CASE("ray-tracer CSG: a lens hit by hand, its merge narrated", "[rays][ray-
     const Tree off = ray_tree(s, {0.6, 0, 5}, {0, 0, -1});
     CHECK(off.result.tree[0].hit.t == Approx(4.7).epsilon(1e-14));
     // A ray beside it misses (the spheres alone would have been hit).
-    CHECK(ray_tree(s, {0.9, 0, 5}, {0, 0, -1}).events[1] == "miss");
+    CHECK(events(ray_tree(s, {0.9, 0, 5}, {0, 0, -1}))[1] == "miss");
 }
 
 TEST_CASE("ray-tracer CSG: shadow rays and refracted rays respect the tree",
@@ -114,8 +117,8 @@ TEST_CASE("ray-tracer CSG: shadow rays and refracted rays respect the tree",
     const Tree dark = ray_tree(plate, {3, 0.5, 0.3}, {-2, -0.5, 0});
     CHECK(lit.result.tree[0].hit.object == 0);
     CHECK(dark.result.tree[0].hit.object == 0);
-    CHECK(std::count(lit.events.begin(), lit.events.end(), "lit") == 1);
-    CHECK(std::count(dark.events.begin(), dark.events.end(), "shadowed") == 1);
+    CHECK(std::ranges::count(events(lit), "lit") == 1);
+    CHECK(std::ranges::count(events(dark), "shadowed") == 1);
     // Glass: the refracted ray starts inside the lens and leaves through its back (the exit
     // of the segment it starts in), then misses.
     const rt::Scene glass = scene(lens("glass"));

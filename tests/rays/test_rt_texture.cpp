@@ -16,8 +16,8 @@
 #include "io/registry.hpp"
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
-#include "rays/tracer_support.hpp"
 #include "rays/texture_reference.hpp"
+#include "rays/tracer_support.hpp"
 #include "support/process.hpp"
 
 using cg::RayTracer;
@@ -27,7 +27,9 @@ namespace rt = cg::rt;
 
 namespace {
 
-rt::Scene scene(const std::string& text) { return cg::test::scene_of(text); }
+rt::Scene scene(const std::string& text) {
+    return cg::test::scene_of(text);
+}
 
 std::string scene_error(const std::string& text) {
     try {

@@ -4,12 +4,11 @@
 
 #include <glm/vec3.hpp>
 #include <string>
-#include <vector>
 
-#include "core/step.hpp"
 #include "io/json.hpp"
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
+#include "support/traced.hpp"
 
 namespace cg::test {
 
@@ -20,12 +19,9 @@ inline rt::Scene scene_of(const std::string& text) {
     return s;
 }
 
-// One given ray's tree, stepped to the end: the result, and each step with its event.
-struct RayTree {
-    RayTracer::Result result;
-    std::vector<StepInfo> steps;
-    std::vector<std::string> events;
-};
+// One given ray's tree, stepped to the end: the result and each step (`events(t)` lists the
+// steps' events).
+using RayTree = Traced<RayTracer>;
 
 inline RayTree ray_tree(const rt::Scene& s, glm::dvec3 origin, glm::dvec3 direction) {
     RayTracer::Input in;
@@ -34,16 +30,7 @@ inline RayTree ray_tree(const rt::Scene& s, glm::dvec3 origin, glm::dvec3 direct
     in.explicit_ray = true;
     in.ray_origin = origin;
     in.ray_direction = direction;
-    auto st = RayTracer::start(in);
-    RayTree t;
-    while (!RayTracer::done(st)) {
-        StepInfo info;
-        RayTracer::step(st, &info);
-        t.events.push_back(info.event);
-        t.steps.push_back(std::move(info));
-    }
-    t.result = RayTracer::result(st);
-    return t;
+    return run_traced<RayTracer>(in);
 }
 
 }  // namespace cg::test
