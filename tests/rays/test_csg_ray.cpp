@@ -22,6 +22,7 @@
 #include "rays/csg_ray.hpp"
 #include "rays/csg_reference.hpp"
 #include "support/process.hpp"
+#include "support/registry_run.hpp"
 #include "support/replay.hpp"
 #include "support/traced.hpp"
 
@@ -31,41 +32,20 @@ using glm::dvec3;
 
 namespace {
 
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
+using cg::test::events;
+using cg::test::registry;
+using Run = cg::test::JsonTraced;
 
 const cg::Algorithm& algorithm() {
-    return *registry().find("csg-ray");
+    return cg::test::algorithm("csg-ray");
 }
 
-struct Run {
-    cg::json result;
-    std::vector<std::string> events;
-    std::vector<cg::StepInfo> steps;
-};
-
-Run run_json(const std::string& text) {
-    auto run = algorithm().create(cg::parse_json(text));
-    Run r;
-    while (!run->done()) {
-        cg::StepInfo info;
-        run->step(&info);
-        r.events.push_back(info.event);
-        r.steps.push_back(info);
-    }
-    r.result = algorithm().result(*run);
-    return r;
+cg::test::JsonTraced run_json(const std::string& text) {
+    return cg::test::run_json("csg-ray", text);
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        run_json(text);
-    } catch (const cg::InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
+    return cg::test::error_of("csg-ray", text);
 }
 
 using Events = std::vector<std::string>;
@@ -118,7 +98,7 @@ TEST_CASE("csg-ray: the course's question, a sphere minus a sphere", "[rays][csg
     // (0, 0, −5) + t(0, 0, 1); A = sphere r = 2, B = sphere r = 1 at (0, 0, −1): A = [3, 7],
     // B = [3, 5], A − B = [5, 7]; the hit t = 5 at the origin, on B, n = −(0, 0, 1).
     const Run r = run_json(algorithm().example().dump());
-    CHECK(r.events == Events{"leaf", "leaf", "difference", "hit"});
+    CHECK(events(r) == Events{"leaf", "leaf", "difference", "hit"});
     CHECK(r.result["lists"] == spans(R"({"A": [[3, 7]], "B": [[3, 5]], "A − B": [[5, 7]]})"));
     CHECK(r.result["segments"] == spans("[[5, 7]]"));
     CHECK(r.result["hit"] == true);
@@ -146,7 +126,7 @@ TEST_CASE("csg-ray: the rules for touching, tangent and unbounded segments", "[r
         const Run r = run_json(input(node("intersection", lower, upper), E, d));
         CHECK(r.result["segments"] == spans("[]"));
         CHECK(r.result["hit"] == false);
-        CHECK(r.events.back() == "miss");
+        CHECK(events(r).back() == "miss");
     }
     SECTION("A minus a B that touches it leaves A whole") {
         const Run r = run_json(input(node("difference", lower, upper), E, d));
@@ -156,19 +136,19 @@ TEST_CASE("csg-ray: the rules for touching, tangent and unbounded segments", "[r
     SECTION("a tangent sphere gives a zero-length segment, dropped") {
         const Run r = run_json(input(node("union", sphere(1), box({-0.5, -0.5, 2}, {1.5, 0.5, 3})),
                                      {1, 0, -5}, d));
-        CHECK(r.events == Events{"tangent", "leaf", "union", "hit"});
+        CHECK(events(r) == Events{"tangent", "leaf", "union", "hit"});
         CHECK(r.result["lists"]["tree.left"] == spans("[]"));
         CHECK(r.result["segments"] == spans("[[7, 8]]"));
         CHECK(r.steps[0].narration.find("dropped") != std::string::npos);
     }
     SECTION("a ray through a box's edge, and along its face, only touches") {
         const Run edge = run_json(input(box({0, 0, -1}, {1, 1, 1}), {-1, 1, 0}, {1, -1, 0}));
-        CHECK(edge.events.front() == "tangent");
+        CHECK(events(edge).front() == "tangent");
         CHECK(edge.result["segments"] == spans("[]"));
         const Run face = run_json(input(box({0, -1, -1}, {1, 1, 1}), {0, 0, -5}, d));
-        CHECK(face.events.front() == "tangent");
+        CHECK(events(face).front() == "tangent");
         const Run miss = run_json(input(box({2, -1, -1}, {3, 1, 1}), {0, 0, -5}, d));
-        CHECK(miss.events.front() == "leaf-miss");
+        CHECK(events(miss).front() == "leaf-miss");
     }
     SECTION("an open cone holds the ray at both ends: null ends") {
         const Run r = run_json(input(
@@ -208,7 +188,7 @@ TEST_CASE("csg-ray: the rules for touching, tangent and unbounded segments", "[r
         CHECK(r.result["t"] == 4);
         CHECK(r.result["entering"] == false);
         CHECK(r.result["normal"] == spans("[0, 0, 1]"));  // outward, not turned to the eye
-        CHECK(r.events.back() == "exit-hit");
+        CHECK(events(r).back() == "exit-hit");
     }
     SECTION("a solid behind the eye is missed; t is in units of d") {
         const Run back = run_json(input(sphere(1), E, {0, 0, -1}));
@@ -618,7 +598,7 @@ TEST_CASE("csg-ray: exam problems are nice and answered right", "[rays][csg-ray]
             return CsgRay::exam_input(rng);
         }();
         const Run r = run_json(p.input.dump());
-        events.insert(r.events.begin(), r.events.end());
+        for (const std::string& e : cg::test::events(r)) events.insert(e);
         // The root's list against the exact reference; every end a multiple of 1/2.
         const cg::test::LSpans ref = cg::test::reference_segments(in.tree, in.origin, in.direction);
         const cg::json& seg = r.result["segments"];

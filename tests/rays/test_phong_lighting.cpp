@@ -11,6 +11,7 @@
 #include "io/registry.hpp"
 #include "rays/phong_lighting.hpp"
 #include "rays/phong_reference.hpp"
+#include "support/registry_run.hpp"
 #include "support/replay.hpp"
 
 using cg::PhongLighting;
@@ -18,38 +19,16 @@ using glm::dvec3;
 
 namespace {
 
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
+using cg::test::events;
+using cg::test::registry;
+using Traced = cg::test::JsonTraced;
 
-struct Traced {
-    cg::json result;
-    std::vector<std::string> events;
-    std::vector<cg::StepInfo> steps;
-};
-
-Traced run_json(const cg::json& input) {
-    const cg::Algorithm& a = *registry().find("phong-lighting");
-    auto run = a.create(input);
-    Traced t;
-    while (!run->done()) {
-        cg::StepInfo info;
-        run->step(&info);
-        t.events.push_back(info.event);
-        t.steps.push_back(info);
-    }
-    t.result = a.result(*run);
-    return t;
+cg::test::JsonTraced run_json(const cg::json& input) {
+    return cg::test::run_json("phong-lighting", input);
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        run_json(cg::parse_json(text));
-    } catch (const cg::InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
+    return cg::test::error_of("phong-lighting", text);
 }
 
 // The example with changes applied.
@@ -72,7 +51,7 @@ TEST_CASE("phong-lighting: a 3-4-5 light worked by hand, both models", "[rays][p
     // Phong: r = −l + 1.6 n = (−0.6, 0, 0.8), r·v = 0.8, 0.8^20.
     cg::json in = base();
     const Traced blinn = run_json(in);
-    CHECK(blinn.events ==
+    CHECK(events(blinn) ==
           Events{"view", "ambient", "point-light", "diffuse", "blinn-specular", "total"});
     const cg::json& r = blinn.result;
     CHECK(num(r["ambient"]) == Approx(0.1).epsilon(1e-15));
@@ -87,7 +66,7 @@ TEST_CASE("phong-lighting: a 3-4-5 light worked by hand, both models", "[rays][p
 
     in["model"] = "phong";
     const Traced phong = run_json(in);
-    CHECK(phong.events[4] == "phong-specular");
+    CHECK(events(phong)[4] == "phong-specular");
     CHECK(num(phong.result["specular"]) == Approx(0.4 * std::pow(0.8, 20)).epsilon(1e-13));
     CHECK(num(phong.result["lights"][0]["r_dot_v"]) == Approx(0.8));
     const cg::json rr = phong.result["lights"][0]["r"];
@@ -101,7 +80,7 @@ TEST_CASE("phong-lighting: hand cases", "[rays][phong-lighting]") {
         cg::json in = base();
         in["lights"] = cg::json::parse(R"([{"direction": [0, 0, -2], "intensity": 0.5}])");
         const Traced t = run_json(in);
-        CHECK(t.events[2] == "directional-light");
+        CHECK(events(t)[2] == "directional-light");
         CHECK(t.result["lights"][0]["l"] == cg::json::parse("[0, 0, 1]"));
         CHECK(num(t.result["diffuse"]) == Approx(0.3));  // 0.5 · 0.6 · 1
         // Blinn: h = n, so the highlight is full: 0.5 · 0.4.
@@ -120,7 +99,7 @@ TEST_CASE("phong-lighting: hand cases", "[rays][phong-lighting]") {
         in["eye"] = {0, 0, -4};  // the eye below too, so that r·v = 0.8 > 0
         in["lights"][0]["position"] = {3, 0, -4};
         const Traced t = run_json(in);
-        CHECK(t.events ==
+        CHECK(events(t) ==
               Events{"view", "ambient", "point-light", "light-behind", "no-specular", "total"});
         CHECK(num(t.result["lights"][0]["n_dot_l"]) == Approx(-0.8));
         CHECK(num(t.result["diffuse"]) == 0);
@@ -162,7 +141,7 @@ TEST_CASE("phong-lighting: hand cases", "[rays][phong-lighting]") {
         cg::json in = base();
         in["lights"] = cg::json::array();
         const Traced t = run_json(in);
-        CHECK(t.events == Events{"view", "ambient", "total"});
+        CHECK(events(t) == Events{"view", "ambient", "total"});
         CHECK(num(t.result["intensity"]) == Approx(0.1));
     }
 }
@@ -352,7 +331,7 @@ TEST_CASE("phong-lighting: exam problems are answered right", "[rays][phong-ligh
         }
         CHECK(p.question.find("colour at P = ") != std::string::npos);
         const Traced t = run_json(p.input);
-        events.insert(t.events.begin(), t.events.end());
+        for (const std::string& e : cg::test::events(t)) events.insert(e);
         for (const auto& g : cg::grade(p, e)) CHECK(g.correct);
     }
     for (const char* ev : {"point-light", "directional-light", "light-behind", "phong-specular",

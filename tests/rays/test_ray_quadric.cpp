@@ -14,6 +14,7 @@
 #include "io/registry.hpp"
 #include "rays/quadric_reference.hpp"
 #include "rays/ray_quadric.hpp"
+#include "support/registry_run.hpp"
 #include "support/replay.hpp"
 
 using cg::Quadric;
@@ -23,38 +24,16 @@ using glm::dvec3;
 
 namespace {
 
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
+using cg::test::events;
+using cg::test::registry;
+using Traced = cg::test::JsonTraced;
 
-struct Traced {
-    cg::json result;
-    std::vector<std::string> events;
-    std::vector<cg::StepInfo> steps;
-};
-
-Traced run_json(const std::string& text) {
-    const cg::Algorithm& a = *registry().find("ray-quadric");
-    auto run = a.create(cg::parse_json(text));
-    Traced t;
-    while (!run->done()) {
-        cg::StepInfo info;
-        run->step(&info);
-        t.events.push_back(info.event);
-        t.steps.push_back(info);
-    }
-    t.result = a.result(*run);
-    return t;
+cg::test::JsonTraced run_json(const std::string& text) {
+    return cg::test::run_json("ray-quadric", text);
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        run_json(text);
-    } catch (const cg::InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
+    return cg::test::error_of("ray-quadric", text);
 }
 
 using Events = std::vector<std::string>;
@@ -73,7 +52,7 @@ TEST_CASE("ray-quadric: the course's paraboloid question, the linear case", "[ra
     // ∇F = (2x, 2y, −1) = (2, 2, −1), n = (2, 2, −1)/3.
     const Traced t = run_json(
         R"({"quadric": {"type": "paraboloid", "params": {"p": 1, "q": 1}}, "origin": [1, 1, 5], "direction": [0, 0, -1]})");
-    CHECK(t.events == Events{"no-transform", "coefficients", "linear", "roots", "nearest",
+    CHECK(events(t) == Events{"no-transform", "coefficients", "linear", "roots", "nearest",
                              "hit-point", "normal"});
     CHECK(t.result["hit"] == true);
     CHECK(t.result["roots"] == cg::json::parse("[3]"));
@@ -91,7 +70,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
     SECTION("sphere, two roots") {
         const Traced t = run_json(
             R"({"quadric": {"type": "sphere", "params": {"r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})");
-        CHECK(t.events == Events{"no-transform", "coefficients", "two-roots", "roots", "nearest",
+        CHECK(events(t) == Events{"no-transform", "coefficients", "two-roots", "roots", "nearest",
                                  "hit-point", "normal"});
         CHECK(t.result["roots"] == cg::json::parse("[4, 6]"));
         CHECK(t.result["t"] == 4);
@@ -101,7 +80,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
     SECTION("tangent: one double root") {
         const Traced t = run_json(
             R"({"quadric": {"type": "sphere", "params": {"r": 1}}, "origin": [0, 1, 5], "direction": [0, 0, -1]})");
-        CHECK(t.events[2] == "tangent");
+        CHECK(events(t)[2] == "tangent");
         CHECK(t.result["roots"] == cg::json::parse("[5]"));
         CHECK(t.result["point"] == cg::json::parse("[0, 1, 0]"));
         CHECK(t.result["normal"] == cg::json::parse("[0, 1, 0]"));
@@ -111,7 +90,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
         // (x − 1)²/4 + y²/4 + z² = 1, touched by the line x = 3, y = 0.
         const Traced t = run_json(
             R"({"quadric": {"type": "ellipsoid", "params": {"a": 2, "b": 1, "c": 1}, "transform": [[1, 0, 0, 1], [0, 2, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}, "origin": [3, 0, -4], "direction": [0, 0, 2]})");
-        CHECK(t.events == Events{"to-model", "coefficients", "tangent", "roots", "nearest",
+        CHECK(events(t) == Events{"to-model", "coefficients", "tangent", "roots", "nearest",
                                  "hit-point", "normal"});
         CHECK(t.result["roots"] == cg::json::parse("[2]"));
         CHECK(t.result["point"] == cg::json::parse("[3, 0, 0]"));
@@ -136,7 +115,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
     SECTION("a miss: no real root") {
         const Traced t = run_json(
             R"({"quadric": {"type": "sphere", "params": {"r": 1}}, "origin": [2, 0, 5], "direction": [0, 0, -1]})");
-        CHECK(t.events == Events{"no-transform", "coefficients", "no-roots"});
+        CHECK(events(t) == Events{"no-transform", "coefficients", "no-roots"});
         CHECK(t.result["hit"] == false);
         CHECK(t.result["roots"] == cg::json::array());
         CHECK(t.result["t"].is_null());
@@ -146,7 +125,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
     SECTION("a miss: both roots behind the eye") {
         const Traced t = run_json(
             R"({"quadric": {"type": "sphere", "params": {"r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, 1]})");
-        CHECK(t.events.back() == "miss");
+        CHECK(events(t).back() == "miss");
         CHECK(t.result["roots"] == cg::json::parse("[-6, -4]"));
         CHECK(t.result["hit"] == false);
     }
@@ -154,7 +133,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
         // x² + y² = z², ray (1, 0, 5) − t z: z² = 1 at t = 4 and t = 6.
         const Traced t = run_json(
             R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 1, "r": 1}}, "origin": [1, 0, 5], "direction": [0, 0, -1]})");
-        CHECK(t.events[2] == "two-roots");
+        CHECK(events(t)[2] == "two-roots");
         CHECK(t.result["roots"] == cg::json::parse("[4, 6]"));
         CHECK(near(t.result["normal"], {std::sqrt(0.5), 0, -std::sqrt(0.5)}));
     }
@@ -164,18 +143,18 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
         // c = 4, t = 1 at the apex-side point (−1, 0, 1).
         const Traced miss = run_json(
             R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 1, "r": 1}}, "origin": [0, 1, 0], "direction": [1, 0, 1]})");
-        CHECK(miss.events.back() == "no-solution");
+        CHECK(events(miss).back() == "no-solution");
         CHECK(miss.result["hit"] == false);
         const Traced t = run_json(
             R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 1, "r": 1}}, "origin": [-2, 0, 0], "direction": [1, 0, 1]})");
-        CHECK(t.events[2] == "linear");
+        CHECK(events(t)[2] == "linear");
         CHECK(t.result["roots"] == cg::json::parse("[1]"));
         CHECK(t.result["point"] == cg::json::parse("[-1, 0, 1]"));
     }
     SECTION("cone: through the apex, the normal is undefined") {
         const Traced t = run_json(
             R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 2, "r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})");
-        CHECK(t.events == Events{"no-transform", "coefficients", "tangent", "roots", "nearest",
+        CHECK(events(t) == Events{"no-transform", "coefficients", "tangent", "roots", "nearest",
                                  "hit-point", "apex"});
         CHECK(t.result["hit"] == true);
         CHECK(t.result["point"] == cg::json::parse("[0, 0, 0]"));
@@ -184,19 +163,19 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
     SECTION("cone: a ray along a ruling lies in the surface") {
         const Traced t = run_json(
             R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 1, "r": 1}}, "origin": [1, 0, 1], "direction": [1, 0, 1]})");
-        CHECK(t.events.back() == "in-surface");
+        CHECK(events(t).back() == "in-surface");
         CHECK(t.result["hit"] == false);
     }
     SECTION("cylinder: a ray parallel to the axis never meets it") {
         const Traced t = run_json(
             R"({"quadric": {"type": "cylinder", "params": {"p": 2, "q": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})");
-        CHECK(t.events.back() == "no-solution");
+        CHECK(events(t).back() == "no-solution");
     }
     SECTION("paraboloid: the axis-parallel ray from below, inside") {
         const Traced t = run_json(
             R"({"quadric": {"type": "paraboloid", "params": {"p": 2, "q": 1}}, "origin": [2, 0, -3], "direction": [0, 0, 4]})");
         // z = x²/4 = 1 at the wall: t = (1 + 3)/4 = 1.
-        CHECK(t.events[2] == "linear");
+        CHECK(events(t)[2] == "linear");
         CHECK(t.result["t"] == 1);
         CHECK(near(t.result["normal"], {1 / std::sqrt(2.0), 0, -1 / std::sqrt(2.0)}));
     }
@@ -216,7 +195,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
         CHECK(t.steps[4].narration.find("outside the slab") != std::string::npos);
         const Traced both = run_json(
             R"({"quadric": {"type": "cylinder", "params": {"p": 1, "q": 1}, "zmin": -0.5, "zmax": 0.5}, "origin": [-3, 0, -3], "direction": [1, 0, 1]})");
-        CHECK(both.events.back() == "miss");
+        CHECK(events(both).back() == "miss");
     }
     SECTION("a transformed sphere: solve in model space, scale back") {
         // Unit sphere scaled by 2 in x and moved by (1, 0, 0); ray from (10, 0, 0) along −x:
@@ -439,7 +418,7 @@ TEST_CASE("ray-quadric: exam problems are nice and answered right", "[rays][ray-
             cg::test::reference_intersect(in.quadric, in.origin, in.direction);
         const cg::json& e = p.expected;
         const Traced traced = run_json(p.input.dump());
-        events.insert(traced.events.begin(), traced.events.end());
+        for (const std::string& e : cg::test::events(traced)) events.insert(e);
         if (ref.a != 0 && std::fabs(ref.disc_rel) < 1e-12L) {
             // Tangent as posed ((−3, −2.4) on the ellipse x²/25 + y²/9 = 1), a hair off it
             // for the doubles nearest −2.4: the algorithm calls it tangent, as the exam means.
