@@ -14,6 +14,7 @@
 #include "io/registry.hpp"
 #include "rays/bump_map.hpp"
 #include "rays/texture_reference.hpp"
+#include "support/registry_run.hpp"
 #include "support/replay.hpp"
 #include "support/traced.hpp"
 
@@ -24,30 +25,16 @@ namespace t = cg::test;
 
 namespace {
 
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
-
 const cg::Algorithm& algo() {
-    return *registry().find("bump-map");
+    return cg::test::algorithm("bump-map");
 }
 
-// The input as the JSON adapter reads it (the adapter lives in the _json.cpp): through the
-// registry, from the started state.
 BumpMap::Input input_of(const cg::json& j) {
-    auto run = algo().create(j);
-    return *static_cast<cg::RunOf<BumpMap>&>(*run).state.in;
+    return cg::test::input_of<BumpMap>("bump-map", j);
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        auto r = algo().create(cg::parse_json(text));
-        while (!r->done()) r->step(nullptr);
-    } catch (const cg::InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
+    return cg::test::error_of("bump-map", text);
 }
 
 constexpr double kPi = std::numbers::pi;

@@ -13,6 +13,7 @@
 #include "io/registry.hpp"
 #include "rays/solid_texture.hpp"
 #include "rays/texture_reference.hpp"
+#include "support/registry_run.hpp"
 #include "support/replay.hpp"
 #include "support/traced.hpp"
 
@@ -22,30 +23,16 @@ namespace t = cg::test;
 
 namespace {
 
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
-
 const cg::Algorithm& algo() {
-    return *registry().find("solid-texture");
+    return cg::test::algorithm("solid-texture");
 }
 
-// The input as the JSON adapter reads it (the adapter lives in the _json.cpp): through the
-// registry, from the started state.
 SolidTextureAlgo::Input input_of(const cg::json& j) {
-    auto run = algo().create(j);
-    return *static_cast<cg::RunOf<SolidTextureAlgo>&>(*run).state.in;
+    return cg::test::input_of<SolidTextureAlgo>("solid-texture", j);
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        auto r = algo().create(cg::parse_json(text));
-        while (!r->done()) r->step(nullptr);
-    } catch (const cg::InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
+    return cg::test::error_of("solid-texture", text);
 }
 
 dvec3 random_point(cg::Rng& rng, double L) {

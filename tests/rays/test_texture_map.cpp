@@ -21,6 +21,7 @@
 #include "rays/texture_map.hpp"
 #include "rays/texture_reference.hpp"
 #include "support/process.hpp"
+#include "support/registry_run.hpp"
 #include "support/replay.hpp"
 #include "support/traced.hpp"
 
@@ -31,35 +32,20 @@ namespace t = cg::test;
 
 namespace {
 
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
-
 const cg::Algorithm& algo() {
-    return *registry().find("texture-map");
+    return cg::test::algorithm("texture-map");
 }
 
-// The input as the JSON adapter reads it (the adapter lives in the _json.cpp): through the
-// registry, from the started state.
 TextureMap::Input input_of(const cg::json& j) {
-    auto run = algo().create(j);
-    return *static_cast<cg::RunOf<TextureMap>&>(*run).state.in;
+    return cg::test::input_of<TextureMap>("texture-map", j);
 }
 
 cg::json run(const std::string& text) {
-    auto r = algo().create(cg::parse_json(text));
-    while (!r->done()) r->step(nullptr);
-    return algo().result(*r);
+    return cg::test::result_of("texture-map", text);
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        run(text);
-    } catch (const cg::InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
+    return cg::test::error_of("texture-map", text);
 }
 
 bool near(const cg::json& j, std::vector<double> want, double tol = 1e-12) {

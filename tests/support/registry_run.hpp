@@ -47,14 +47,34 @@ inline JsonTraced run_json(const std::string& id, const std::string& text) {
     return run_json(id, parse_json(text));
 }
 
+// Only the result, stepping without narration (as the CLI's `run` does).
+inline json result_of(const std::string& id, const json& input) {
+    const Algorithm& a = algorithm(id);
+    auto run = a.create(input);
+    while (!run->done()) run->step(nullptr);
+    return a.result(*run);
+}
+
+inline json result_of(const std::string& id, const std::string& text) {
+    return result_of(id, parse_json(text));
+}
+
 // The InputError message a JSON text gets, or "(accepted)" when the run goes through.
 inline std::string error_of(const std::string& id, const std::string& text) {
     try {
-        run_json(id, text);
+        result_of(id, text);
     } catch (const InputError& e) {
         return e.what();
     }
     return "(accepted)";
+}
+
+// The typed input the JSON adapter (the algorithm's _json.cpp) reads from a JSON input: taken
+// from the started state, for algorithms whose state shares its input as `in`.
+template <class A>
+typename A::Input input_of(const std::string& id, const json& input) {
+    auto run = algorithm(id).create(input);
+    return *static_cast<RunOf<A>&>(*run).state.in;
 }
 
 }  // namespace cg::test
