@@ -177,7 +177,8 @@ const Spec& Perspective::spec() {
         {
             "M_model: model → world (the identity unless given)",
             "V ← look-at: f̂ = (center − eye)/|…|, r = f̂ × up/|…|, u = r × f̂; rows r, u, ±f̂",
-            "P ← [c/a 0 0 0; 0 c 0 0; 0 0 ±(f+n)/(f−n) −2fn/(f−n); 0 0 ±1 0],  c = cot(θ/2)",
+            "P ← [c/a 0 0 0; 0 c 0 0; 0 0 ±(f+n)/(f−n) −2fn/(f−n); 0 0 ±1 0],  c = cot(θ/2)  "
+            "(frustum l, r, b, t: [2n/(r−l) 0 ∓(r+l)/(r−l) 0; 0 2n/(t−b) ∓(t+b)/(t−b) 0; …])",
             "for each point p:  p_view ← V M_model p",
             "  p_clip ← P p_view         ▷ inside the volume iff −w ≤ x, y, z ≤ w",
             "  if w > 0: p_ndc ← (x/w, y/w, z/w)   ▷ the perspective divide",
@@ -189,7 +190,8 @@ const Spec& Perspective::spec() {
             {"model-matrix", "the model matrix taking the points into the world"},
             {"view-frame", "the look-at frame and the view matrix"},
             {"view-identity", "no look-at given: the points are in view coordinates already"},
-            {"projection-matrix", "the perspective matrix for the field of view, aspect, near, far"},
+            {"projection-matrix", "the perspective matrix for the field of view, aspect, near, far "
+                                  "(or the frustum's left, right, bottom, top, near, far)"},
             {"point-to-view", "one point through the model and view matrices"},
             {"inside-volume", "the point's clip coordinates satisfy −w ≤ x, y, z ≤ w"},
             {"outside-volume", "the point is in front of the eye but outside the view volume"},
@@ -209,6 +211,19 @@ const Spec& Perspective::spec() {
 // ---- [validate] -----------------------------------------------------------------------------
 
 dmat4 Perspective::projection_matrix(const Input& in) {
+    if (in.has_frustum) {  // glFrustum; the course's convention negates the third column
+        const double n = in.near, f = in.far, s = zsign(in.convention);
+        const double w = in.right - in.left, h = in.top - in.bottom;
+        dmat4 m(0.0);
+        m[0][0] = 2 * n / w;
+        m[1][1] = 2 * n / h;
+        m[2][0] = -s * (in.right + in.left) / w;
+        m[2][1] = -s * (in.top + in.bottom) / h;
+        m[2][2] = s * (f + n) / (f - n);
+        m[3][2] = -2 * f * n / (f - n);
+        m[2][3] = s;
+        return m;
+    }
     // cot(θ/2) = sin(90° − θ/2) / sin(θ/2): exactly 1 for θ = 90°, where 1/tan(π/4) and
     // cos(π/4)/sin(π/4) are 1 + 2⁻⁵² (the sines of equal arguments are equal).
     const double half = in.fov_y_deg / 2;
@@ -246,30 +261,70 @@ dmat4 Perspective::view_matrix(const Input& in) {
     return in.look_at ? view_from(view_frame(in), in.convention) : dmat4(1.0);
 }
 
+namespace {
+
+// The off-axis frustum's own checks: finite, left < right, bottom < top, and a width and
+// height whose entries 2n/(r − l), (r + l)/(r − l) (and for t, b) are finite and non-zero.
+void validate_frustum(const Perspective::Input& in) {
+    check_finite(in.left, "frustum.left");
+    check_finite(in.right, "frustum.right");
+    check_finite(in.bottom, "frustum.bottom");
+    check_finite(in.top, "frustum.top");
+    if (!(in.left < in.right))
+        throw InputError("frustum.right", "must be greater than left (" + num(in.right) + " ≤ " +
+                                              num(in.left) + "): the near rectangle has no width");
+    if (!(in.bottom < in.top))
+        throw InputError("frustum.top", "must be greater than bottom (" + num(in.top) + " ≤ " +
+                                            num(in.bottom) + "): the near rectangle has no height");
+    auto usable = [&](double lo, double hi) {
+        const double w = hi - lo, a = 2 * in.near / w, b = (hi + lo) / w;
+        return std::isfinite(w) && std::isfinite(a) && std::isfinite(b) && a != 0;
+    };
+    if (!usable(in.left, in.right))
+        throw InputError("frustum.right", "left " + num(in.left) + " and right " + num(in.right) +
+                                              " give a matrix too large or too small to use "
+                                              "for near " + num(in.near));
+    if (!usable(in.bottom, in.top))
+        throw InputError("frustum.top", "bottom " + num(in.bottom) + " and top " + num(in.top) +
+                                            " give a matrix too large or too small to use "
+                                            "for near " + num(in.near));
+}
+
+}  // namespace
+
 void Perspective::validate(const Input& in) {
-    check_finite(in.fov_y_deg, "fov_y_deg");
-    check_finite(in.aspect, "aspect");
-    check_finite(in.near, "near");
-    check_finite(in.far, "far");
-    if (!(in.fov_y_deg > 0 && in.fov_y_deg < 180))
-        throw InputError("fov_y_deg", "must be between 0 and 180 degrees, both excluded (got " +
-                                          num(in.fov_y_deg) + ")");
-    if (in.aspect <= 0)
-        throw InputError("aspect", "must be positive: it is width / height (got " +
-                                       num(in.aspect) + ")");
+    // In the frustum form, near and far are fields of "frustum".
+    const std::string near_field = in.has_frustum ? "frustum.near" : "near";
+    const std::string far_field = in.has_frustum ? "frustum.far" : "far";
+    if (!in.has_frustum) {
+        check_finite(in.fov_y_deg, "fov_y_deg");
+        check_finite(in.aspect, "aspect");
+    }
+    check_finite(in.near, near_field);
+    check_finite(in.far, far_field);
+    if (!in.has_frustum) {
+        if (!(in.fov_y_deg > 0 && in.fov_y_deg < 180))
+            throw InputError("fov_y_deg", "must be between 0 and 180 degrees, both excluded (got " +
+                                              num(in.fov_y_deg) + ")");
+        if (in.aspect <= 0)
+            throw InputError("aspect", "must be positive: it is width / height (got " +
+                                           num(in.aspect) + ")");
+    }
     if (in.near <= 0)
-        throw InputError("near", "must be positive: the near plane lies in front of the eye (got " +
-                                     num(in.near) + ")");
+        throw InputError(near_field,
+                         "must be positive: the near plane lies in front of the eye (got " +
+                             num(in.near) + ")");
     // Beyond these the matrix's entries (far + near)/(far − near) and 2 far near/(far − near)
     // lose all precision or overflow, and near is the first of the two a user puts out of range.
     if (in.near < 1e-100 || in.near > 1e100)
-        throw InputError("near", "must lie between 1e-100 and 1e100 (got " + num(in.near) + ")");
+        throw InputError(near_field, "must lie between 1e-100 and 1e100 (got " + num(in.near) + ")");
     if (in.far <= in.near)
-        throw InputError("far", "must be greater than near (" + num(in.far) +
-                                    " ≤ " + num(in.near) + ")");
+        throw InputError(far_field, "must be greater than near (" + num(in.far) +
+                                        " ≤ " + num(in.near) + ")");
+    if (in.has_frustum) validate_frustum(in);
     if (!finite(projection_matrix(in)) || projection_matrix(in)[0][0] == 0)
-        throw InputError("far", "near " + num(in.near) + " and far " + num(in.far) +
-                                    " give a matrix too large or too small to use");
+        throw InputError(far_field, "near " + num(in.near) + " and far " + num(in.far) +
+                                        " give a matrix too large or too small to use");
     if (in.look_at) {
         check_finite(in.eye, "eye");
         check_finite(in.center, "center");
@@ -478,12 +533,44 @@ void narrate_view(const Perspective::State& s, StepInfo& info) {
                 " \\\\ 0 & 1 \\end{bmatrix} = " + matrix_tex(s.r.view);
 }
 
+void narrate_frustum(const Perspective::State& s, StepInfo& info) {
+    const bool course = s.in.convention == Convention::Course;
+    const Perspective::Input& in = s.in;
+    const dmat4& p = s.r.projection;
+    const std::string sx = course ? "−(r+l)/(r−l) = " : "(r+l)/(r−l) = ";
+    const std::string sy = course ? "−(t+b)/(t−b) = " : "(t+b)/(t−b) = ";
+    const bool off_axis = in.left != -in.right || in.bottom != -in.top;
+    info.narration =
+        "Frustum: near rectangle x ∈ [" + num(in.left) + ", " + num(in.right) + "], y ∈ [" +
+        num(in.bottom) + ", " + num(in.top) + "] at depth n = " + num(in.near) + ", far " +
+        num(in.far) + ". 2n/(r−l) = " + num(p[0][0], 4) + ", 2n/(t−b) = " + num(p[1][1], 4) +
+        ", " + sx + num(p[2][0], 4) + ", " + sy + num(p[2][1], 4) +
+        (off_axis ? " (off-axis: the window's centre (" + num((in.left + in.right) / 2) + ", " +
+                        num((in.bottom + in.top) / 2) +
+                        ") shifts x and y in proportion to depth, so the frustum leans)"
+                  : " (symmetric: the same as the fov form)") +
+        "; " + (course ? "(f+n)/(f−n) = " : "−(f+n)/(f−n) = ") + num(p[2][2], 4) +
+        ", −2fn/(f−n) = " + num(p[3][2], 4) + ", and w = " + (course ? "z" : "−z") +
+        ". P = " + matrix_text(p) + ": depth n goes to z_ndc = −1, depth f to +1.";
+    const std::string sgn = course ? "-" : "";
+    info.math = "P = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & " + sgn +
+                "\\frac{r+l}{r-l} & 0 \\\\ 0 & \\frac{2n}{t-b} & " + sgn +
+                "\\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & " +
+                std::string(course ? "\\frac{f+n}{f-n}" : "-\\frac{f+n}{f-n}") +
+                " & \\frac{-2fn}{f-n} \\\\ 0 & 0 & " + (course ? "1" : "-1") +
+                " & 0 \\end{bmatrix} = " + matrix_tex(p);
+}
+
 void narrate_projection(const Perspective::State& s, StepInfo& info) {
     const bool course = s.in.convention == Convention::Course;
     const dmat4& p = s.r.projection;
     const double c = p[1][1];
     info.event = "projection-matrix";
     info.line = kLineProjection;
+    if (s.in.has_frustum) {
+        narrate_frustum(s, info);
+        return;
+    }
     info.narration = "fov_y = " + num(s.in.fov_y_deg) + "°: c = cot(" + num(s.in.fov_y_deg / 2) +
                      "°) = " + num(c, 4) + ", c/a = " + num(p[0][0], 4) + " for aspect " +
                      num(s.in.aspect) + "; near " + num(s.in.near) + ", far " + num(s.in.far) +
@@ -629,11 +716,16 @@ void narrate_segment_divide(const Perspective::State& s, StepInfo& info) {
 }
 
 void fill_vars(const Perspective::State& s, StepInfo& info) {
-    info.vars = {{"fov_y_deg", s.in.fov_y_deg},
-                 {"aspect", s.in.aspect},
-                 {"near", s.in.near},
-                 {"far", s.in.far},
-                 {"M_model", rows(s.r.model)}};
+    if (s.in.has_frustum)
+        info.vars = {{"left", s.in.left},     {"right", s.in.right}, {"bottom", s.in.bottom},
+                     {"top", s.in.top},       {"near", s.in.near},   {"far", s.in.far},
+                     {"M_model", rows(s.r.model)}};
+    else
+        info.vars = {{"fov_y_deg", s.in.fov_y_deg},
+                     {"aspect", s.in.aspect},
+                     {"near", s.in.near},
+                     {"far", s.in.far},
+                     {"M_model", rows(s.r.model)}};
     if (s.last >= Phase::View) info.vars.push_back({"V", rows(s.r.view)});
     if (s.last >= Phase::Projection) info.vars.push_back({"P", rows(s.r.projection)});
     const int k = s.k;
@@ -736,9 +828,16 @@ void Perspective::step(State& s, StepInfo* info) {
 void Perspective::draw(const State& s, Scene& scene) {
     const Input& in = s.in;
     const Frame fr = view_frame(in);
+    // The frustum's x and y range per unit depth: symmetric for the fov form, the near
+    // rectangle over n for the frustum form (glFrustum's l, r, b, t).
     const double ty = std::tan(in.fov_y_deg * kPi / 360), tx = ty * in.aspect;
-    auto at_depth = [&](double x, double y, double depth) {  // view-frame coordinates to world
-        return fr.eye + depth * (x * tx * fr.right + y * ty * fr.up + fr.forward);
+    const double x_lo = in.has_frustum ? in.left / in.near : -tx;
+    const double x_hi = in.has_frustum ? in.right / in.near : tx;
+    const double y_lo = in.has_frustum ? in.bottom / in.near : -ty;
+    const double y_hi = in.has_frustum ? in.top / in.near : ty;
+    auto at_depth = [&](double x, double y, double depth) {  // corner (±1, ±1) to world
+        const double u = x < 0 ? x_lo : x_hi, v = y < 0 ? y_lo : y_hi;
+        return fr.eye + depth * (u * fr.right + v * fr.up + fr.forward);
     };
     // The far plane can be far away; draw the frustum to the farthest point shown, if nearer.
     double depth_shown = in.far;

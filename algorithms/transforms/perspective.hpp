@@ -13,6 +13,15 @@
 // two view frames differ only in the sign of z and the two matrices in the sign of their third
 // column, so a world point gets the very same clip coordinates either way.
 //
+// Instead of θ and a, an asymmetric (off-axis) frustum may be given as glFrustum takes it: the
+// near rectangle [l, r] × [b, t] (view x and y at depth n; l < r, b < t), n and f. Then
+//   opengl  P = [2n/(r−l) 0 (r+l)/(r−l) 0; 0 2n/(t−b) (t+b)/(t−b) 0;
+//                0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]     (glFrustum, glm::frustum)
+//   course  the same with the third column negated (the view z is the depth, not −depth):
+//           [2n/(r−l) 0 −(r+l)/(r−l) 0; 0 2n/(t−b) −(t+b)/(t−b) 0; 0 0 (f+n)/(f−n) −2fn/(f−n);
+//            0 0 1 0].
+// With l = −r, b = −t, t = n tan(θ/2) and r = a t it is the symmetric matrix above.
+//
 // The look-at frame (both conventions): f̂ = (center − eye)/|center − eye| the view direction,
 // r = f̂ × up / |f̂ × up| (right), u = r × f̂ (up); the view matrix has rows r, u and f̂ (course)
 // or −f̂ (opengl), each with the translation −row · eye. Without eye/center/up the view matrix
@@ -54,6 +63,10 @@ struct Perspective {
         double fov_y_deg = 90;  // vertical field of view, in (0°, 180°)
         double aspect = 1;      // width / height, > 0
         double near = 1, far = 10;  // 0 < near < far
+        // The off-axis form (glFrustum) instead of fov_y_deg and aspect: the near rectangle in
+        // view x and y at depth `near`, left < right, bottom < top.
+        bool has_frustum = false;
+        double left = -1, right = 1, bottom = -1, top = 1;
         bool look_at = false;   // eye, center, up given (else the view matrix is the identity)
         glm::dvec3 eye{0, 0, 0}, center{0, 0, 1}, up{0, 1, 0};
         bool has_model = false;

@@ -1,5 +1,7 @@
 // The projection pipeline's JSON:
-//   input  {"convention": "course" | "opengl", "fov_y_deg", "aspect", "near", "far",
+//   input  {"convention": "course" | "opengl", "fov_y_deg", "aspect", "near", "far"
+//           or instead of those four "frustum": {"left", "right", "bottom", "top", "near", "far"}
+//           (glFrustum's off-axis form; exactly one of the two forms),
 //           "eye", "center", "up" (optional, eye and center together; up defaults to [0, 1, 0]),
 //           "model": 4×4 rows (optional, affine), "points": [[x, y, z], …],
 //           "segments": [[[x, y, z], [x, y, z]], …] (optional), "viewport": [W, H] (optional)}
@@ -44,8 +46,8 @@ template <>
 struct JsonIo<Perspective> {
     static Perspective::Input input(const json& j) {
         Reader r(j);
-        r.only({"convention", "fov_y_deg", "aspect", "near", "far", "eye", "center", "up", "model",
-                "points", "segments", "viewport"});
+        r.only({"convention", "fov_y_deg", "aspect", "near", "far", "frustum", "eye", "center",
+                "up", "model", "points", "segments", "viewport"});
         Perspective::Input in;
         const std::string convention = r.string("convention");
         if (convention == "course")
@@ -55,10 +57,28 @@ struct JsonIo<Perspective> {
         else
             throw InputError("convention", "must be \"course\" (the view looks down +z) or "
                                            "\"opengl\" (down −z), got \"" + convention + "\"");
-        in.fov_y_deg = r.number("fov_y_deg");
-        in.aspect = r.number("aspect");
-        in.near = r.number("near");
-        in.far = r.number("far");
+        if (r.has("frustum")) {  // the off-axis form: exactly one of the two
+            for (const char* key : {"fov_y_deg", "aspect", "near", "far"})
+                if (r.has(key))
+                    throw InputError(r.field(key),
+                                     "cannot be given with \"frustum\": give either fov_y_deg, "
+                                     "aspect, near and far, or a frustum {left, right, bottom, "
+                                     "top, near, far}");
+            const Reader f = r.object("frustum");
+            f.only({"left", "right", "bottom", "top", "near", "far"});
+            in.has_frustum = true;
+            in.left = f.number("left");
+            in.right = f.number("right");
+            in.bottom = f.number("bottom");
+            in.top = f.number("top");
+            in.near = f.number("near");
+            in.far = f.number("far");
+        } else {
+            in.fov_y_deg = r.number("fov_y_deg");
+            in.aspect = r.number("aspect");
+            in.near = r.number("near");
+            in.far = r.number("far");
+        }
         if (r.has("eye") != r.has("center"))
             throw InputError(r.has("eye") ? "center" : "eye",
                              "is missing: a look-at needs both eye and center");
@@ -98,11 +118,17 @@ struct JsonIo<Perspective> {
     }
 
     static json input_json(const Perspective::Input& in) {
-        json j{{"convention", in.convention == Perspective::Convention::Course ? "course" : "opengl"},
-               {"fov_y_deg", nice_number(in.fov_y_deg)},
-               {"aspect", nice_number(in.aspect)},
-               {"near", nice_number(in.near)},
-               {"far", nice_number(in.far)}};
+        json j{{"convention", in.convention == Perspective::Convention::Course ? "course" : "opengl"}};
+        if (in.has_frustum) {
+            j["frustum"] = json{{"left", nice_number(in.left)},     {"right", nice_number(in.right)},
+                                {"bottom", nice_number(in.bottom)}, {"top", nice_number(in.top)},
+                                {"near", nice_number(in.near)},     {"far", nice_number(in.far)}};
+        } else {
+            j["fov_y_deg"] = nice_number(in.fov_y_deg);
+            j["aspect"] = nice_number(in.aspect);
+            j["near"] = nice_number(in.near);
+            j["far"] = nice_number(in.far);
+        }
         if (in.look_at) {
             j["eye"] = nice_point(in.eye);
             j["center"] = nice_point(in.center);
