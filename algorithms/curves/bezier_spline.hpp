@@ -17,17 +17,25 @@
 // P_i and P_{i+1} with P'(0) = v_i and P'(1) = v_{i+1}, so the spline is C1 by construction.
 // Catmull-Rom makes the derivatives up from the points: v_i = (P_{i+1} − P_{i−1}) / 2 inside;
 // at the ends (our convention) the one-sided differences v_0 = P_1 − P_0, v_N = P_N − P_{N−1}.
+// A closed Catmull-Rom spline (`closed`, at least 3 points, the last not repeating the first)
+// has no ends: every v_i = (P_{i+1} − P_{i−1}) / 2 with the indices taken cyclically (P_{−1} =
+// P_N, P_{N+1} = P_0), and one segment more, from P_N back to P_0 — so N + 1 segments and N + 1
+// joints, the last (segment N into segment 0) the seam, C1 like every other joint. `closed`
+// applies to Catmull-Rom only: segments and Hermite data are taken as given (a loop there is
+// the user's to close, with its own tangents), so it is refused for them.
 //
 // Steps: Catmull-Rom's derivatives one point at a time; Hermite segments one at a time; one
 // step per joint (its continuity); a summary (the weakest joint).
 //
-// Conventions: 2D points; at least 1 segment or 2 points, at most 1,000 segments; every
-// coordinate finite and within ±1e100.
+// Conventions: 2D or 3D points — all of one input the same dimension (`dim`; 2D points have
+// z = 0 here); at least 1 segment or 2 points (3 when closed), at most 1,000 segments; every
+// coordinate finite and within ±1e100. A 3D spline is drawn on the 3D canvas (no handles).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,14 +46,16 @@
 namespace cg {
 
 struct BezierSpline {
-    using Segment = std::array<glm::dvec2, 4>;  // one cubic's control points P_0 .. P_3
+    using Segment = std::array<glm::dvec3, 4>;  // one cubic's control points P_0 .. P_3
     enum class Mode : std::uint8_t { Segments, Hermite, CatmullRom };
 
     struct Input {
         Mode mode = Mode::Segments;
+        int dim = 2;                       // 2 or 3 for every point of the input (2D: z = 0)
         std::vector<Segment> segments;     // Segments: the cubics as given
-        std::vector<glm::dvec2> points;    // Hermite and Catmull-Rom: P_0 .. P_N
-        std::vector<glm::dvec2> tangents;  // Hermite: v_0 .. v_N (derivatives at the points)
+        std::vector<glm::dvec3> points;    // Hermite and Catmull-Rom: P_0 .. P_N
+        std::vector<glm::dvec3> tangents;  // Hermite: v_0 .. v_N (derivatives at the points)
+        bool closed = false;               // Catmull-Rom only: a loop back to P_0
         bool operator==(const Input&) const = default;
     };
 
@@ -57,9 +67,10 @@ struct BezierSpline {
     };
 
     struct Result {
+        int dim = 2;
         std::vector<Segment> segments;
-        std::vector<Joint> joints;                        // joints[j]: between segments j and j + 1
-        std::optional<std::vector<glm::dvec2>> tangents;  // v_i (Hermite: given; Catmull-Rom: made)
+        std::vector<Joint> joints;  // joints[j]: segments j and j + 1 (closed: the last, N and 0)
+        std::optional<std::vector<glm::dvec3>> tangents;  // v_i (Hermite: given; Catmull-Rom: made)
         bool operator==(const Result&) const = default;
     };
 
@@ -71,7 +82,7 @@ struct BezierSpline {
         Phase phase = Phase::Joint;        // the step to take next
         Phase taken = Phase::Done;         // the step taken last (Done: none yet)
         int index = -1;                    // the point, segment or joint that step handled
-        std::vector<glm::dvec2> tangents;  // v_i: Catmull-Rom fills them one by one
+        std::vector<glm::dvec3> tangents;  // v_i: Catmull-Rom fills them one by one
         std::vector<Segment> segments;     // Hermite and Catmull-Rom fill them one by one
         std::vector<Joint> joints;
         bool operator==(const State&) const = default;
@@ -94,7 +105,12 @@ struct BezierSpline {
     static Joint classify(const Segment& a, const Segment& b, double tolerance);
     // "C2", "C1", "G1", "C0" or "broken": the strongest level that holds.
     static std::string level(const Joint& j);
-    static Segment hermite_segment(glm::dvec2 p0, glm::dvec2 v0, glm::dvec2 p1, glm::dvec2 v1);
+    static Segment hermite_segment(glm::dvec3 p0, glm::dvec3 v0, glm::dvec3 p1, glm::dvec3 v1);
+    // How many segments and joints the input makes (closed: one segment more, the seam joint).
+    static std::size_t segment_count(const Input& in);
+    static std::size_t joint_count(const Input& in) {
+        return in.closed ? segment_count(in) : segment_count(in) - 1;
+    }
 
   private:
     static void advance(State& s);

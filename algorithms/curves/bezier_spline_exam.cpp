@@ -14,15 +14,21 @@ namespace cg {
 
 namespace {
 
-glm::dvec2 random_point(Rng& rng, int x0, int x1, int y0, int y1) {
-    return {static_cast<double>(rng.integer(x0, x1)), static_cast<double>(rng.integer(y0, y1))};
+// Exam problems are 2D: points with z = 0, written [x, y].
+glm::dvec3 random_point(Rng& rng, int x0, int x1, int y0, int y1) {
+    const double x = static_cast<double>(rng.integer(x0, x1));
+    return {x, static_cast<double>(rng.integer(y0, y1)), 0};
+}
+
+std::string xy_text(glm::dvec3 p) {
+    return num(glm::dvec2(p.x, p.y));
 }
 
 std::string segment_text(const BezierSpline::Segment& s, const char* letter) {
     std::string out;
     for (int i = 0; i < 4; ++i)
         out += (i ? ", " : "") + std::string(letter) + std::to_string(i) + " = " +
-               num(s[static_cast<std::size_t>(i)]);
+               xy_text(s[static_cast<std::size_t>(i)]);
     return out;
 }
 
@@ -34,7 +40,7 @@ BezierSpline::Input BezierSpline::exam_input(Rng& rng) {
         in.mode = Mode::CatmullRom;
         double x = static_cast<double>(rng.integer(0, 1));
         for (int i = 0; i < 4; ++i) {
-            in.points.push_back({x, static_cast<double>(rng.integer(0, 6))});
+            in.points.push_back({x, static_cast<double>(rng.integer(0, 6)), 0});
             x += static_cast<double>(rng.integer(2, 4));
         }
         return in;
@@ -51,7 +57,7 @@ BezierSpline::Input BezierSpline::exam_input(Rng& rng) {
     else
         do a[3] = random_point(rng, 5, 7, 0, 5);
         while (a[3] == a[2]);
-    const glm::dvec2 out = a[3] - a[2];
+    const glm::dvec3 out = a[3] - a[2];
     b[0] = a[3];
     b[3] = a[3] + random_point(rng, 3, 5, -3, 3);
     switch (kind) {
@@ -86,8 +92,10 @@ BezierSpline::Input BezierSpline::exam_input(Rng& rng) {
             break;
         }
         default:  // broken: the second piece starts elsewhere
-            b[0] = a[3] + glm::dvec2(static_cast<double>(rng.integer(1, 2)),
-                                     static_cast<double>(rng.integer(-1, 1)));
+        {
+            const double dx = static_cast<double>(rng.integer(1, 2));
+            b[0] = a[3] + glm::dvec3(dx, static_cast<double>(rng.integer(-1, 1)), 0);
+        }
             b[1] = b[0] + out;
             b[2] = b[1] + random_point(rng, 0, 3, -3, 3);
             break;
@@ -111,7 +119,7 @@ std::string BezierSpline::question(const Input& in) {
     std::string points;
     for (std::size_t i = 0; i < in.points.size(); ++i)
         points +=
-            (i ? ", " : "") + std::string("P") + std::to_string(i) + " = " + num(in.points[i]);
+            (i ? ", " : "") + std::string("P") + std::to_string(i) + " = " + xy_text(in.points[i]);
     return "A Catmull-Rom spline passes through " + points +
            ". Its derivatives are v_i = (P_{i+1} − P_{i−1}) / 2 inside and the one-sided "
            "differences "

@@ -13,7 +13,13 @@
 
 using cg::BezierSpline;
 using glm::dvec2;
+using glm::dvec3;
 using Segment = BezierSpline::Segment;
+
+// A 2D point as the spline stores it: z = 0.
+inline dvec3 P(double x, double y) {
+    return {x, y, 0};
+}
 
 namespace {
 
@@ -35,12 +41,12 @@ BezierSpline::Input segments(std::vector<Segment> s) {
 }
 
 // The uniform cubic B-spline segment over D_i .. D_{i+3} in Bézier form.
-Segment from_bspline(dvec2 d0, dvec2 d1, dvec2 d2, dvec2 d3) {
+Segment from_bspline(dvec3 d0, dvec3 d1, dvec3 d2, dvec3 d3) {
     return {(d0 + 4.0 * d1 + d2) / 6.0, (2.0 * d1 + d2) / 3.0, (d1 + 2.0 * d2) / 3.0,
             (d1 + 4.0 * d2 + d3) / 6.0};
 }
 
-bool near(dvec2 a, dvec2 b, double tol) {
+bool near(dvec3 a, dvec3 b, double tol) {
     return glm::length(a - b) <= tol;
 }
 
@@ -70,10 +76,10 @@ TEST_CASE("bezier-spline: continuity of constructed joints", "[curves][bezier-sp
     struct Trial {
         std::mt19937_64 rng;
         Segment a;
-        dvec2 out, c2_q2;  // P3 − P2, and the Q2 that closes the A-frame
-        dvec2 pt() {
+        dvec3 out, c2_q2;  // P3 − P2, and the Q2 that closes the A-frame
+        dvec3 pt() {
             return {std::uniform_real_distribution<double>(-10, 10)(rng),
-                    std::uniform_real_distribution<double>(-10, 10)(rng)};
+                    std::uniform_real_distribution<double>(-10, 10)(rng), 0};
         }
     };
     auto trials = [](auto&& check) {
@@ -88,8 +94,8 @@ TEST_CASE("bezier-spline: continuity of constructed joints", "[curves][bezier-sp
     };
     SECTION("C2: consecutive segments of a B-spline") {
         trials([](Trial& t) {
-            dvec2 d[6];
-            for (dvec2& p : d) p = t.pt();
+            dvec3 d[6];
+            for (dvec3& p : d) p = t.pt();
             const auto r = run(segments({from_bspline(d[0], d[1], d[2], d[3]),
                                          from_bspline(d[1], d[2], d[3], d[4]),
                                          from_bspline(d[2], d[3], d[4], d[5])}));
@@ -111,7 +117,7 @@ TEST_CASE("bezier-spline: continuity of constructed joints", "[curves][bezier-sp
     SECTION("C1 but not C2") {
         trials([](Trial& t) {
             const auto r =
-                run(segments({t.a, {t.a[3], t.a[3] + t.out, t.c2_q2 + dvec2(1, 0), t.pt()}}));
+                run(segments({t.a, {t.a[3], t.a[3] + t.out, t.c2_q2 + P(1, 0), t.pt()}}));
             CHECK(BezierSpline::level(r.joints[0]) == "C1");
             CHECK_FALSE(r.joints[0].c2);
         });
@@ -132,21 +138,21 @@ TEST_CASE("bezier-spline: continuity of constructed joints", "[curves][bezier-sp
             CHECK(BezierSpline::level(back.joints[0]) == "C0");
             CHECK_FALSE(back.joints[0].beta.has_value());
             const auto side =
-                run(segments({t.a, {t.a[3], t.a[3] + dvec2(-t.out.y, t.out.x), t.pt(), t.pt()}}));
+                run(segments({t.a, {t.a[3], t.a[3] + P(-t.out.y, t.out.x), t.pt(), t.pt()}}));
             CHECK(BezierSpline::level(side.joints[0]) == "C0");
         });
     }
     SECTION("broken: the next piece starts elsewhere, even if smooth otherwise") {
         trials([](Trial& t) {
-            const dvec2 q0 = t.a[3] + dvec2(0.01, 0);
+            const dvec3 q0 = t.a[3] + P(0.01, 0);
             const auto r = run(segments({t.a, {q0, q0 + t.out, t.pt(), t.pt()}}));
             CHECK(BezierSpline::level(r.joints[0]) == "broken");
             CHECK_FALSE(r.joints[0].g1);
         });
     }
     SECTION("zero end vectors on both sides: C1 without a direction (no β)") {
-        const auto r = run(segments({{dvec2(0, 0), dvec2(1, 1), dvec2(2, 0), dvec2(2, 0)},
-                                     {dvec2(2, 0), dvec2(2, 0), dvec2(3, 1), dvec2(4, 0)}}));
+        const auto r = run(
+            segments({{P(0, 0), P(1, 1), P(2, 0), P(2, 0)}, {P(2, 0), P(2, 0), P(3, 1), P(4, 0)}}));
         CHECK(r.joints[0].c1);
         CHECK(r.joints[0].g1);
         CHECK_FALSE(r.joints[0].beta.has_value());
@@ -162,8 +168,8 @@ TEST_CASE("bezier-spline: Hermite segments interpolate with the given derivative
         in.mode = BezierSpline::Mode::Hermite;
         const int n = 2 + trial % 6;
         for (int i = 0; i < n; ++i) {
-            in.points.push_back({u(rng), u(rng)});
-            in.tangents.push_back({u(rng), u(rng)});
+            in.points.push_back({u(rng), u(rng), 0});
+            in.tangents.push_back({u(rng), u(rng), 0});
         }
         CAPTURE(trial);
         const auto r = run(in);
@@ -185,28 +191,27 @@ TEST_CASE("bezier-spline: Catmull-Rom makes derivatives from neighbours, and is 
     SECTION("four points worked by hand") {
         BezierSpline::Input in;
         in.mode = BezierSpline::Mode::CatmullRom;
-        in.points = {{0, 0}, {2, 3}, {5, 3}, {7, 0}};
+        in.points = {P(0, 0), P(2, 3), P(5, 3), P(7, 0)};
         std::vector<std::string> events;
         const auto r = run(in, &events);
         CHECK(events == std::vector<std::string>{"tangent", "tangent", "tangent", "tangent",
                                                  "segment", "segment", "segment", "joint-c1",
                                                  "joint-c1", "summary"});
-        CHECK(*r.tangents == std::vector<dvec2>{{2, 3}, {2.5, 1.5}, {2.5, -1.5}, {2, -3}});
+        CHECK(*r.tangents == std::vector<dvec3>{P(2, 3), P(2.5, 1.5), P(2.5, -1.5), P(2, -3)});
         // The segment between P1 and P2: [P1, P1 + v1/3, P2 − v2/3, P2].
-        CHECK(r.segments[1][0] == dvec2(2, 3));
-        CHECK(near(r.segments[1][1], {2 + 2.5 / 3, 3.5}, 1e-15));
-        CHECK(near(r.segments[1][2], {5 - 2.5 / 3, 3.5}, 1e-15));
-        CHECK(r.segments[1][3] == dvec2(5, 3));
+        CHECK(r.segments[1][0] == P(2, 3));
+        CHECK(near(r.segments[1][1], P(2 + 2.5 / 3, 3.5), 1e-15));
+        CHECK(near(r.segments[1][2], P(5 - 2.5 / 3, 3.5), 1e-15));
+        CHECK(r.segments[1][3] == P(5, 3));
     }
     SECTION("two points: one straight segment") {
         BezierSpline::Input in;
         in.mode = BezierSpline::Mode::CatmullRom;
-        in.points = {{0, 0}, {3, 6}};
+        in.points = {P(0, 0), P(3, 6)};
         std::vector<std::string> events;
         const auto r = run(in, &events);
         CHECK(events.back() == "summary");
-        CHECK(r.segments ==
-              std::vector<Segment>{{dvec2(0, 0), dvec2(1, 2), dvec2(2, 4), dvec2(3, 6)}});
+        CHECK(r.segments == std::vector<Segment>{{P(0, 0), P(1, 2), P(2, 4), P(3, 6)}});
         CHECK(r.joints.empty());
     }
     SECTION(
@@ -217,14 +222,14 @@ TEST_CASE("bezier-spline: Catmull-Rom makes derivatives from neighbours, and is 
             std::uniform_real_distribution<double> u(-100, 100);
             BezierSpline::Input in;
             in.mode = BezierSpline::Mode::CatmullRom;
-            for (int i = 0; i < 3 + trial % 8; ++i) in.points.push_back({u(rng), u(rng)});
+            for (int i = 0; i < 3 + trial % 8; ++i) in.points.push_back({u(rng), u(rng), 0});
             CAPTURE(trial);
             const auto r = run(in);
             const auto& p = in.points;
             for (std::size_t i = 0; i + 1 < p.size(); ++i) {
                 CHECK(r.segments[i][0] == p[i]);
                 CHECK(r.segments[i][3] == p[i + 1]);
-                const dvec2 v = i == 0 ? p[1] - p[0] : (p[i + 1] - p[i - 1]) / 2.0;
+                const dvec3 v = i == 0 ? p[1] - p[0] : (p[i + 1] - p[i - 1]) / 2.0;
                 CHECK(near(3.0 * (r.segments[i][1] - r.segments[i][0]), v, 1e-12 * 100));
             }
             for (const auto& j : r.joints) CHECK(j.c1);
@@ -252,8 +257,7 @@ TEST_CASE("bezier-spline: bad input names the field", "[curves][bezier-spline]")
     CHECK_THROWS_WITH(create(R"({"catmull_rom": {"points": [[0, 0], [1, 1]], "tension": 0.5}})"),
                       Catch::StartsWith("catmull_rom.tension: is not a known field"));
     BezierSpline::Input in;
-    in.segments = {{dvec2(0, 0), dvec2(1, std::numeric_limits<double>::quiet_NaN()), dvec2(2, 0),
-                    dvec2(3, 0)}};
+    in.segments = {{P(0, 0), P(1, std::numeric_limits<double>::quiet_NaN()), P(2, 0), P(3, 0)}};
     CHECK_THROWS_WITH(BezierSpline::start(in),
                       "segments[0][1][1]: must be a finite number (got NaN)");
 }
@@ -277,7 +281,7 @@ TEST_CASE("bezier-spline: exam problems reach every kind of joint",
         REQUIRE(r.joints.size() == 1);
         ++kinds[BezierSpline::level(r.joints[0])];
         for (const auto& seg : in.segments)
-            for (dvec2 p : seg) CHECK((p.x == std::floor(p.x) && p.y == std::floor(p.y)));
+            for (dvec3 p : seg) CHECK((p.x == std::floor(p.x) && p.y == std::floor(p.y)));
     }
     CHECK(catmull_rom > 120);
     for (const char* k : {"C2", "C1", "G1", "C0", "broken"}) {
