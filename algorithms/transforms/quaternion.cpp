@@ -1065,7 +1065,7 @@ void draw_conjugate(const State& s, Scene& scene) {
     frame_of(scene, Slerp::to_matrix(u), "q·", 1.0, 0.9f);
     if (s.phase > Phase::Conjugate || s.phase == Phase::Done)
         frame_of(scene, Slerp::to_matrix(Slerp::conjugate(u)),
-                 s.in.op == Op::Inverse ? "q⁻¹·" : "q̄·", 0.8, 0.6f);
+                 s.in.op == Op::Inverse ? "q⁻¹·" : "conj(q)·", 0.8, 0.6f);
 }
 
 void draw_rotate(const State& s, Scene& scene, double reach) {
@@ -1074,7 +1074,7 @@ void draw_rotate(const State& s, Scene& scene, double reach) {
     const auto axis = Quaternion::axis_of(u);
     if (axis) {
         scene.segments3.push_back({-reach * *axis, reach * *axis, "", kAxisStyle, true});
-        scene.labels3.push_back({reach * *axis, "axis v̂", {Role::Active}});
+        scene.labels3.push_back({reach * *axis, "rotation axis", {Role::Active}});
     }
     scene.points3.push_back({p, "P", {Role::Subject}});
     if (s.phase > Phase::TimesConjugate || s.phase == Phase::Done) {

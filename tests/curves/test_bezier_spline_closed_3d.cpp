@@ -76,16 +76,17 @@ TEST_CASE("bezier-spline closed: a square loop worked by hand", "[curves][bezier
     CHECK_THAT(t.steps[11].narration,
                Catch::Contains("Joint 4 (segment 3 into segment 0, where the loop closes)"));
     CHECK_THAT(t.steps[12].narration, Catch::Contains("4 segments in a closed loop, 4 joints"));
-    const cg::json r =
-        cg::test::result_of("bezier-spline", R"({"catmull_rom": {"points": [[0, 0], [2, 0],
-                            [2, 2], [0, 2]], "closed": true}})");
+    const cg::json r = cg::test::result_of(
+        "bezier-spline", std::string(R"({"catmull_rom": {"points": [[0, 0], [2, 0],
+                            [2, 2], [0, 2]], "closed": true}})"));
     CHECK(r["segments"].size() == 4);
     CHECK(r["segments"][3][3] == cg::json::array({0.0, 0.0}));
     CHECK(r["joints"].size() == 4);
     // "closed": false is the open spline.
-    CHECK(cg::test::result_of("bezier-spline",
-                              R"({"catmull_rom": {"points": [[0, 0], [2, 0], [2, 2], [0, 2]],
-                                  "closed": false}})")["segments"]
+    CHECK(cg::test::result_of(
+              "bezier-spline",
+              std::string(R"({"catmull_rom": {"points": [[0, 0], [2, 0], [2, 2], [0, 2]],
+                                  "closed": false}})"))["segments"]
               .size() == 3);
 }
 
@@ -188,11 +189,13 @@ TEST_CASE(
           "C0");
     // The JSON result keeps the third coordinate.
     const cg::json r = cg::test::result_of(
-        "bezier-spline", R"({"catmull_rom": {"points": [[0, 0, 0], [1, 2, 3], [4, 0, 1]]}})");
+        "bezier-spline",
+        std::string(R"({"catmull_rom": {"points": [[0, 0, 0], [1, 2, 3], [4, 0, 1]]}})"));
     CHECK(r["tangents"][0] == cg::json::array({1.0, 2.0, 3.0}));
     CHECK(r["segments"][1][3] == cg::json::array({4.0, 0.0, 1.0}));
     const auto t = cg::test::run_json(
-        "bezier-spline", R"({"catmull_rom": {"points": [[0, 0, 0], [1, 2, 3], [4, 0, 1]]}})");
+        "bezier-spline",
+        std::string(R"({"catmull_rom": {"points": [[0, 0, 0], [1, 2, 3], [4, 0, 1]]}})"));
     CHECK_THAT(t.steps[0].narration, Catch::Contains("= (1, 2, 3) − (0, 0, 0) = (1, 2, 3)"));
 }
 

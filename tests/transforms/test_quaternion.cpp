@@ -20,6 +20,7 @@
 #include "transforms/slerp.hpp"
 
 using cg::Quaternion;
+using cg::Slerp;
 using glm::dmat3;
 using glm::dquat;
 using glm::dvec3;
@@ -532,7 +533,7 @@ TEST_CASE("quaternion: the JSON result, determinism, stepping back, and the pres
     CHECK(r["point"].is_null());
     CHECK(r["matrix"].is_null());
     const cg::json m =
-        cg::test::result_of("quaternion", R"({"op": "to_matrix", "q": [0, 0, 0, 2]})");
+        cg::test::result_of("quaternion", std::string(R"({"op": "to_matrix", "q": [0, 0, 0, 2]})"));
     CHECK(m["matrix"] == cg::json::array({{-1.0, 0.0, 0.0}, {0.0, -1.0, 0.0}, {0.0, 0.0, 1.0}}));
     CHECK(m["angle_deg"] == 180.0);
     CHECK(m["axis"] == cg::json::array({0.0, 0.0, 1.0}));
@@ -571,7 +572,7 @@ TEST_CASE("quaternion: the picture — axes, the rotation axis, the point and it
         CHECK(scene.points3[0].label == "P");
         CHECK(scene.points3[1].label == "P′");
         CHECK(vdiff(scene.points3[1].p, {0, 1, 1}) < 1e-15);
-        CHECK(labelled(scene, "axis v̂"));
+        CHECK(labelled(scene, "rotation axis"));
         int arc = 0;
         for (const auto& seg : scene.segments3) {
             arc += seg.style.role == cg::Role::Leaving;
