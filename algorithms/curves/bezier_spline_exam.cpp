@@ -93,8 +93,11 @@ BezierSpline::Input BezierSpline::exam_input(Rng& rng) {
         }
         default:  // broken: the second piece starts elsewhere
         {
+            // The same draws as before the points became 3D: GCC evaluated the two arguments
+            // of glm::dvec2(rng…, rng…) right to left, so y is drawn first.
+            const double dy = static_cast<double>(rng.integer(-1, 1));
             const double dx = static_cast<double>(rng.integer(1, 2));
-            b[0] = a[3] + glm::dvec3(dx, static_cast<double>(rng.integer(-1, 1)), 0);
+            b[0] = a[3] + glm::dvec3(dx, dy, 0);
         }
             b[1] = b[0] + out;
             b[2] = b[1] + random_point(rng, 0, 3, -3, 3);
