@@ -246,7 +246,7 @@ TEST_CASE("bezier-spline closed and 3D: bad input names the field", "[curves][be
                       "segments[0][1][2]: must be 0 for a 2D point (got 1)");
 }
 
-TEST_CASE("bezier-spline closed and 3D: presets replay; the pictures", "[curves][bezier-spline]") {
+TEST_CASE("bezier-spline closed and 3D: presets replay, and the pictures", "[curves][bezier-spline]") {
     const cg::Algorithm& a = cg::test::algorithm("bezier-spline");
     const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", cg::test::registry());
     const cg::Lesson* lesson = lib.for_algorithm("bezier-spline");
