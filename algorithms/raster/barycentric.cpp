@@ -328,9 +328,9 @@ void narrate_area(const State& s, StepInfo& info) {
                  ? " > 0: A, B, C turn counter-clockwise."
                  : " < 0: A, B, C turn clockwise; the sub-areas are signed the same way, so "
                    "the ratios come out the same.");
-        info.math = "\\text{area} = \\tfrac{1}{2}\\,(B - A) \\times (C - A) = \\tfrac{1}{2}(" +
-                    tex(ab.x) + " \\cdot " + tex(ac.y) + " - " + tex(ab.y) + " \\cdot " +
-                    tex(ac.x) + ") = " + tex(s.area);
+        info.math = "\\text{area} = \\tfrac{1}{2}\\,(B - A) \\times (C - A) = \\tfrac{1}{2}((" +
+                    tex(ab.x) + ")(" + tex(ac.y) + ") - (" + tex(ab.y) + ")(" + tex(ac.x) +
+                    ")) = " + tex(s.area);
     } else {
         info.narration = points + ": n = (B − A) × (C − A) = " + num(v[1] - v[0]) + " × " +
                          num(v[2] - v[0]) + " = " + num(s.normal) + ", |n| = " + num(2 * s.area) +
