@@ -597,6 +597,7 @@ void Shading::step(State& s, StepInfo* info) {
     check_input(in);
     const VertexNormals vn = vertex_normals(in);
     Result r;
+    r.model = in.model;
     r.width = static_cast<int>(in.width), r.height = static_cast<int>(in.height);
     r.pixel = chosen_pixel(in);
     r.rgb = in.lighting.rgb;
@@ -624,6 +625,7 @@ void Shading::step(State& s, StepInfo* info) {
 Shading::Result Shading::result(const State& s) {
     const Input& in = *s.in;
     Result r;
+    r.model = in.model;
     r.width = s.image.width(), r.height = s.image.height();
     r.pixel = {s.pixel_i, s.pixel_j};
     r.rgb = in.lighting.rgb;

@@ -124,6 +124,7 @@ struct Shading {
     };
 
     struct Result {
+        Model model = Model::Phong;
         int width = 0, height = 0;
         Image image;                       // row 0 at the bottom
         std::vector<glm::dvec3> normals;   // Gouraud, Phong: unit vertex normals (0: unused)

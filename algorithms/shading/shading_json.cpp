@@ -139,13 +139,13 @@ struct JsonIo<Shading> {
             depth.push_back(std::move(depth_row));
         }
         json out{{"image", std::move(image)}, {"ids", std::move(ids)}, {"depth", std::move(depth)}};
-        if (!r.normals.empty()) {
+        if (r.model != Shading::Model::Flat) {
             json normals = json::array();
             for (std::size_t v = 0; v < r.normals.size(); ++v)
                 normals.push_back(r.lit[v] ? to_json(r.normals[v]) : json(nullptr));
             out["normals"] = std::move(normals);
         }
-        if (!r.vertex_colors.empty()) {
+        if (r.model == Shading::Model::Gouraud) {
             json colors = json::array();
             for (std::size_t v = 0; v < r.vertex_colors.size(); ++v)
                 colors.push_back(color_or_null(r.lit[v], r.vertex_colors[v], r.rgb));

@@ -599,7 +599,9 @@ TEST_CASE("shading: bad input is refused with the field named", "[shading]") {
     CHECK(error_with([](cg::json& j) {
               j["lighting"]["eye"] = {0, 0, 1e200};
           }) == "lighting.eye[2]: must lie within ±1e100 (got 1e+200)");
-    CHECK_THAT(error_with([](cg::json& j) { j["lighting"]["point"] = {0, 0, 0}; }),
+    CHECK_THAT(error_with([](cg::json& j) {
+                   j["lighting"]["point"] = {0, 0, 0};
+               }),
                Catch::StartsWith("lighting.point: is not a known field"));
     CHECK_THAT(error_with([](cg::json& j) {
                    j["lighting"]["lights"][0] = {
