@@ -1097,12 +1097,36 @@ Polygon2 rectangle(dvec2 lo, dvec2 hi, Style style) {
     return {{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, style, true, false};
 }
 
+// The part of segment a→b inside [0, W] × [0, H] (Liang-Barsky); false when none.
+bool clip_to_image(dvec2& a, dvec2& b, double W, double H) {
+    double t0 = 0, t1 = 1;
+    const dvec2 d = b - a;
+    const double p[4] = {-d.x, d.x, -d.y, d.y}, q[4] = {a.x, W - a.x, a.y, H - a.y};
+    for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0) {
+            if (q[k] < 0) return false;
+            continue;
+        }
+        const double r = q[k] / p[k];
+        if (p[k] < 0)
+            t0 = std::max(t0, r);
+        else
+            t1 = std::min(t1, r);
+    }
+    if (t0 > t1) return false;
+    const dvec2 a0 = a;
+    a = a0 + t0 * d, b = a0 + t1 * d;
+    return true;
+}
+
+// The mesh's edges over an image whose origin is o, clipped to it.
 void mesh_edges(const Input& in, dvec2 o, Scene& scene) {
     if (in.mesh.triangles.size() > 400) return;
     for (const auto& t : in.mesh.triangles)
         for (int m = 0; m < 3; ++m) {
-            const dvec3 a = in.mesh.vertices[t[m]], b = in.mesh.vertices[t[(m + 1) % 3]];
-            scene.segments.push_back({o + xy(a), o + xy(b), "", {Role::Construction, 1.0f}, false});
+            dvec2 a = xy(in.mesh.vertices[t[m]]), b = xy(in.mesh.vertices[t[(m + 1) % 3]]);
+            if (clip_to_image(a, b, double(in.width), double(in.height)))
+                scene.segments.push_back({o + a, o + b, "", {Role::Construction, 1.0f}, false});
         }
 }
 
@@ -1174,7 +1198,7 @@ void Shading::draw(const State& s, Scene& scene) {
             grid.rgba[static_cast<std::size_t>(j) * w + i] = p.triangle < 0 ? 0u : rgba_of(p.color);
             if (j == s.pixel_j && p.triangle >= 0) profile[i] = intensity(p.color);
         }
-    grid.grid_lines = w * h <= 64 * 64;
+    grid.grid_lines = w * h <= 16 * 16;  // cell borders for the small (exam) images
     scene.grids.push_back(std::move(grid));
     image_frame(L, 0, s.pixel_i, s.pixel_j, model_name(in.model) + " shading (this run)",
                 model_role(in.model), scene);
@@ -1203,7 +1227,7 @@ void Shading::draw(const State& s, Scene& scene) {
     for (double v : {0.0, 0.5, 1.0}) {
         const dvec2 a = plot_point(L, 0, v), b = plot_point(L, L.W, v);
         if (v == 0.5) scene.segments.push_back({a, b, "", {Role::Construction, 1.0f, true}, false});
-        scene.labels.push_back({b + dvec2(0.2, 0), num(v), {Role::Neutral}});
+        scene.labels.push_back({a - dvec2(0.3, 0), num(v), {Role::Neutral}});
     }
     scene.labels.push_back({o + dvec2(0, L.H + 0.2),
                             "(r + g + b)/3 along row " + std::to_string(s.pixel_j),
@@ -1220,12 +1244,6 @@ void Shading::draw(const State& s, Scene& scene) {
                 profile_line(L, cmp.profile[static_cast<int>(m)], m, false, scene);
         }
     profile_line(L, profile, in.model, true, scene);
-    for (int slot = 0; slot < 3; ++slot) {
-        const Model m = order[slot];
-        if (slot > 0 && (!compare || cmp.profile[static_cast<int>(m)].empty())) continue;
-        scene.labels.push_back(
-            {o + dvec2(L.W * slot / 3.0, -0.6 * L.gap), "— " + model_name(m), {model_role(m)}});
-    }
 
     // The triangle being drawn, its current span and the span's ends.
     const bool finished = s.phase == Phase::Done;
