@@ -1032,6 +1032,7 @@ double intensity(Color c) {
 }
 
 constexpr long long kComparisonPixels = 128 * 128;  // larger images are not compared
+constexpr std::uint32_t kBackground = Shading::kBackground;
 
 // The picture's layout, a 2 × 2 table of cells the image's size: the run's image top left, the
 // other two models top right and bottom left, the intensity profile bottom right (its x axis
@@ -1083,7 +1084,7 @@ void fill_comparison(const Shading::State& s, Shading::Comparison& c) {
             for (int i = 0; i < r.width; ++i) {
                 const Sample& p = r.at(i, j);
                 rgba[static_cast<std::size_t>(j) * r.width + i] =
-                    p.triangle < 0 ? 0u : rgba_of(p.color);
+                    p.triangle < 0 ? kBackground : rgba_of(p.color);
             }
         auto& profile = c.profile[static_cast<int>(m)];
         for (int i = 0; i < r.width; ++i) {
@@ -1195,7 +1196,8 @@ void Shading::draw(const State& s, Scene& scene) {
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             const Sample& p = s.image.at(i, j);
-            grid.rgba[static_cast<std::size_t>(j) * w + i] = p.triangle < 0 ? 0u : rgba_of(p.color);
+            grid.rgba[static_cast<std::size_t>(j) * w + i] =
+                p.triangle < 0 ? kBackground : rgba_of(p.color);
             if (j == s.pixel_j && p.triangle >= 0) profile[i] = intensity(p.color);
         }
     grid.grid_lines = w * h <= 16 * 16;  // cell borders for the small (exam) images

@@ -74,6 +74,9 @@ struct Shading {
     static constexpr double kMaxWork = double(1LL << 24);  // pixels in the clipped bounding boxes
     static constexpr double kMaxCoordinate = ScanTriangle::kMaxCoordinate;  // |x|, |y|, |z|
     static constexpr double kMaxLightCoordinate = 1e100;  // |coordinate| of the eye, a light
+    // The picture's uncovered pixels: a dark slate, as a frame buffer's clear colour, so that
+    // white (clamped) pixels stand out as well as black ones.
+    static constexpr std::uint32_t kBackground = 0x2a3447ffu;
 
     enum class Model : std::uint8_t { Flat, Gouraud, Phong };
     using Color = glm::dvec3;
@@ -159,7 +162,7 @@ struct Shading {
     // takes no part in a state's equality.
     struct Comparison {
         std::once_flag once;
-        std::array<std::vector<std::uint32_t>, 3> rgba;  // per Model: 0xRRGGBBAA, 0 uncovered
+        std::array<std::vector<std::uint32_t>, 3> rgba;  // per Model: 0xRRGGBBAA
         std::array<std::vector<double>, 3> profile;      // per Model: the chosen row's intensity
     };
     struct ComparisonCache {

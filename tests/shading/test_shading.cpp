@@ -704,7 +704,7 @@ TEST_CASE("shading: the picture shows the run beside the other two models and th
     CHECK(titles.count("(r + g + b)/3 along row 6") == 1);
     // The other two are complete: every pixel the mesh covers is coloured.
     long long filled = 0;
-    for (std::uint32_t c : scene.grids[1].rgba) filled += c != 0;
+    for (std::uint32_t c : scene.grids[1].rgba) filled += c != Shading::kBackground;
     CHECK(filled == 14 * 10);  // the mesh covers x 1 … 15, y 1 … 11: 14 × 10 centres
     // Profile polylines: below the images (y < 0), one thick one for this run.
     int profile_lines = 0, thick = 0;
@@ -722,7 +722,7 @@ TEST_CASE("shading: the picture shows the run beside the other two models and th
     cg::Scene end;
     run->draw(end);
     long long mine = 0;
-    for (std::uint32_t c : end.grids[0].rgba) mine += c != 0;
+    for (std::uint32_t c : end.grids[0].rgba) mine += c != Shading::kBackground;
     CHECK(mine == filled);
     int thick_end = 0;
     for (const auto& p : end.polygons)
