@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -669,6 +670,14 @@ TEST_CASE("shading: traces are deterministic, resumable, and copies share the im
     for (const char* model : {"flat", "gouraud", "phong"}) {
         in["model"] = model;
         cg::test::check_replay(a, in, cg::test::kEveryStep);
+    }
+    // Every preset of the lesson: the same trace twice, the timeline back and forth, a copy
+    // taken at step 7 finishing as the timeline does.
+    std::ifstream file(CG_SOURCE_DIR "/lessons/215-shading.json");
+    const cg::json lesson = cg::json::parse(file);
+    for (const auto& preset : lesson.at("presets")) {
+        CAPTURE(preset.at("name").get<std::string>());
+        cg::test::check_replay(a, preset.at("input"), 7);
     }
     // A copy taken mid-run is a snapshot: stepping the original does not change it.
     Shading::State s = Shading::start(right_triangle(Model::Phong));
