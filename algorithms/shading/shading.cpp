@@ -745,7 +745,7 @@ void narrate_vertex_colors(const Shading::State& s, StepInfo& info) {
     info.line = kLineVertexColors;
     info.narration =
         "Gouraud lights the vertices only: " + plural(s.evaluations, "evaluation", "evaluations") +
-        ", one per vertex. ";
+        ", one per vertex, each ambient + diffuse + specular: ";
     const std::vector<int> shown = listed_vertices(s);
     for (std::size_t a = 0; a < shown.size(); ++a) {
         const int v = shown[a];
@@ -761,7 +761,7 @@ void narrate_vertex_colors(const Shading::State& s, StepInfo& info) {
         info.narration +=
             " (and " +
             plural(s.evaluations - static_cast<long long>(shown.size()), "more", "more") + ")";
-    info.narration += " (ambient + diffuse + specular).";
+    info.narration += ".";
 }
 
 void narrate_triangle(const Shading::State& s, StepInfo& info) {
