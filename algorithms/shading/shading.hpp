@@ -68,7 +68,7 @@ namespace cg {
 
 struct Shading {
     static constexpr long long kMaxSize = ScanTriangle::kMaxSize;  // pixels per side
-    static constexpr long long kMaxPixels = 1LL << 22;             // width × height
+    static constexpr long long kMaxPixels = 1LL << 20;  // width × height (the z-buffer's 1024²)
     static constexpr long long kMaxVertices = 100'000;
     static constexpr long long kMaxTriangles = 100'000;
     static constexpr double kMaxWork = double(1LL << 24);  // pixels in the clipped bounding boxes

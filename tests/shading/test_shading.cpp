@@ -619,13 +619,15 @@ TEST_CASE("shading: bad input is refused with the field named", "[shading]") {
     CHECK(error_with([](cg::json& j) { j["width"] = 5000; }) ==
           "width: must be a whole number of pixels from 1 to 4096 (got 5000)");
     CHECK(error_with([](cg::json& j) { j["width"] = 4096, j["height"] = 4096; }) ==
-          "width: the image would have 16777216 pixels, more than the limit of 4194304 (4096 × "
+          "width: the image would have 16777216 pixels, more than the limit of 1048576 (4096 × "
           "4096)");
     CHECK_THAT(error_with([](cg::json& j) {
-                   j["width"] = 2048, j["height"] = 2048;
-                   for (int k = 0; k < 6; ++k)
-                       j["mesh"]["triangles"].push_back({0, 1, 2}),
-                           j["mesh"]["vertices"][2] = {2000, 2000, 0};
+                   // 17 triangles over the whole of a 1024² image: 17 × 1024 × 1025 > 2^24.
+                   j["width"] = 1024, j["height"] = 1024;
+                   j["mesh"]["vertices"][0] = {0, 0, 8}, j["mesh"]["vertices"][2] = {1024, 0, 8};
+                   j["mesh"]["vertices"][8] = {1024, 1024, 8};
+                   j["mesh"]["triangles"] = cg::json::array();
+                   for (int k = 0; k < 17; ++k) j["mesh"]["triangles"].push_back({0, 2, 8});
                }),
                Catch::StartsWith("mesh.triangles: the triangles' bounding boxes hold"));
     CHECK_THAT(error_with([](cg::json& j) { j["mesh"]["colour"] = 1; }),
