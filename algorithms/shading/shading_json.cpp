@@ -63,7 +63,7 @@ std::vector<std::array<long long, 3>> triangles(const Reader& mesh) {
         std::array<long long, 3> tri;
         for (int m = 0; m < 3; ++m)
             tri[m] = whole(t[k][m], fk + "[" + std::to_string(m) + "]",
-                           "a vertex index (a whole number)");
+                           "a vertex index (an integer)");
         out.push_back(tri);
     }
     return out;
@@ -97,8 +97,8 @@ struct JsonIo<Shading> {
             if (!p.is_array() || p.size() != 2)
                 throw InputError("pixel", "must be a pixel [i, j], got " + describe(p));
             in.has_pixel = true;
-            in.pixel = {whole(p[0], "pixel[0]", "a whole number"),
-                        whole(p[1], "pixel[1]", "a whole number")};
+            in.pixel = {whole(p[0], "pixel[0]", "an integer"),
+                        whole(p[1], "pixel[1]", "an integer")};
         }
         return in;
     }

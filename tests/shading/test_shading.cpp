@@ -572,7 +572,7 @@ TEST_CASE("shading: bad input is refused with the field named", "[shading]") {
     CHECK(error_with([](cg::json& j) { j["mesh"]["triangles"][0][0] = -1; }) ==
           "mesh.triangles[0][0]: must be a vertex index from 0 to 8 (got -1)");
     CHECK(error_with([](cg::json& j) { j["mesh"]["triangles"][0][1] = 1.5; }) ==
-          "mesh.triangles[0][1]: must be a vertex index (a whole number), got 1.5");
+          "mesh.triangles[0][1]: must be a vertex index (an integer), got 1.5");
     CHECK(error_with([](cg::json& j) {
               j["mesh"]["triangles"][2] = {1, 2};
           }) ==
