@@ -121,6 +121,26 @@ void PhongLighting::validate(const Input& in) {
                          "is too far from the " + std::string(big(in.point) > big(in.eye) ? "eye" : "point") +
                              " for double precision");
     }
+    validate_lighting(in);
+    for (std::size_t i = 0; i < in.lights.size(); ++i) {
+        const Light& L = in.lights[i];
+        if (L.directional) continue;
+        const std::string f = "lights[" + std::to_string(i) + "]";
+        if (L.position == in.point)
+            throw InputError(f + ".position",
+                             "must differ from point: the light's direction l "
+                             "is undefined when it sits on the surface point");
+        const double r = glm::length(L.position - in.point);
+        const double den = L.attenuation.x + L.attenuation.y * r + L.attenuation.z * r * r;
+        if (!std::isfinite(r) || !std::isfinite(den) || !(den > 0) || !std::isfinite(1 / den))
+            throw InputError(f + ".position",
+                             "is too far from or too close to the point for "
+                             "double precision (distance " +
+                                 num(r) + ")");
+    }
+}
+
+void PhongLighting::validate_lighting(const Input& in) {
     check_color(in.ambient, in.rgb, "ambient", "an intensity");
     check_color(in.material.ka, in.rgb, "material.ka", "a reflection coefficient");
     check_color(in.material.kd, in.rgb, "material.kd", "a reflection coefficient");
@@ -149,10 +169,6 @@ void PhongLighting::validate(const Input& in) {
             continue;
         }
         check_finite3(L.position, f + ".position");
-        if (L.position == in.point)
-            throw InputError(f + ".position",
-                             "must differ from point: the light's direction l "
-                             "is undefined when it sits on the surface point");
         for (int k = 0; k < 3; ++k) {
             const std::string af = f + ".attenuation[" + std::to_string(k) + "]";
             if (!std::isfinite(L.attenuation[k]))
@@ -163,13 +179,6 @@ void PhongLighting::validate(const Input& in) {
         if (L.attenuation == dvec3(0.0))
             throw InputError(f + ".attenuation",
                              "must not be all zero: 1/(c1 + c2 r + c3 r²) would divide by 0");
-        const double r = glm::length(L.position - in.point);
-        const double den = L.attenuation.x + L.attenuation.y * r + L.attenuation.z * r * r;
-        if (!std::isfinite(r) || !std::isfinite(den) || !(den > 0) || !std::isfinite(1 / den))
-            throw InputError(f + ".position",
-                             "is too far from or too close to the point for "
-                             "double precision (distance " +
-                                 num(r) + ")");
     }
 }
 
@@ -273,15 +282,20 @@ void PhongLighting::step(State& s, StepInfo* info) {
 }
 
 [[gnu::flatten]] PhongLighting::Result PhongLighting::shade(const Input& in) {
+    return shade(in, in.point, in.normal);
+}
+
+[[gnu::flatten]] PhongLighting::Result PhongLighting::shade(const Input& in, dvec3 point,
+                                                            dvec3 normal) {
     Result o;
     o.rgb = in.rgb;
-    o.n = unit_of(in.normal);
-    o.v = unit_of(in.eye - in.point);
+    o.n = unit_of(normal);
+    o.v = unit_of(in.eye - point);
     o.ambient = in.material.ka * in.ambient;
     o.lights.resize(in.lights.size());
     for (std::size_t i = 0; i < in.lights.size(); ++i) {
         LightTerms& t = o.lights[i];
-        light_direction(in.lights[i], in.point, t);
+        light_direction(in.lights[i], point, t);
         diffuse_term(in, o.n, t, in.lights[i]);
         o.diffuse += t.diffuse;
         specular_term(in, o.n, o.v, t, in.lights[i]);

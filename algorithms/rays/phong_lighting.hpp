@@ -90,6 +90,10 @@ struct PhongLighting {
 
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
+    // The checks that do not depend on the point: the ambient light, the material and each
+    // light's intensity, direction and attenuation constants (not its distance to the point).
+    // For callers that light many points with one Input (the shading of a mesh).
+    static void validate_lighting(const Input& in);
     static State start(const Input& in);
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
@@ -104,6 +108,9 @@ struct PhongLighting {
 
     // The whole model as one plain function (benchmark; a tracer's shading).
     static Result shade(const Input& in);
+    // The same at another point and normal, with in's eye, lights and material (in.point and
+    // in.normal are not read): a mesh's shading lights many points with one Input.
+    static Result shade(const Input& in, glm::dvec3 point, glm::dvec3 normal);
 
   private:
     static void advance(State& s);
