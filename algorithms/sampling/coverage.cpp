@@ -102,6 +102,11 @@ dvec2 edge_direction(double angle_deg) {
     if (a == 90) return {0, 1};
     if (a == 180) return {-1, 0};
     if (a == 270) return {0, -1};
+    const double h = std::sqrt(0.5);  // the diagonals exactly: cos 45° = sin 45°
+    if (a == 45) return {h, h};
+    if (a == 135) return {-h, h};
+    if (a == 225) return {-h, -h};
+    if (a == 315) return {h, -h};
     const double r = a * M_PI / 180;
     return {std::cos(r), std::sin(r)};
 }
