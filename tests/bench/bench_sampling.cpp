@@ -2,11 +2,20 @@
 // 1,000 random 1D signals (1 to 3 sines, about 20 samples, linear and sinc reconstruction) and a
 // 32 × 32 zone plate with 16 jittered samples per pixel; supersampling 2,000 random pixels with
 // 16 jittered samples, and with Poisson dart throwing; one narrated step plus its picture each.
+// Distribution ray tracing: rays per second (items) with 16 samples per pixel — the reference
+// scene at 160 × 120 (anti-aliasing only), the soft-shadow scene (a disc light of 16 shadow rays)
+// and the depth-of-field scene, plain on one and two threads and the state machine pixel by
+// pixel; and one narrated step of a distributed ray tree plus its picture.
 #include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <sstream>
 
 #include "bench/bench_support.hpp"
 #include "core/rng.hpp"
 #include "io/registry.hpp"
+#include "rays/ray_tracer.hpp"
+#include "rays/rt_scene_json.hpp"
 #include "sampling/sampling.hpp"
 #include "sampling/supersampling.hpp"
 
@@ -169,5 +178,80 @@ void BM_Supersampling_StepAndPicture(benchmark::State& state) {
     cg::bench::step_and_picture(state, "supersampling");
 }
 BENCHMARK(BM_Supersampling_StepAndPicture)->Unit(benchmark::kMicrosecond);
+
+// ---- distribution ray tracing ----------------------------------------------------------------
+
+cg::json golden_scene(const char* name) {
+    std::ifstream f(std::string(CG_SOURCE_DIR) + "/tests/golden/ray-tracer/" + name + ".json");
+    std::stringstream text;
+    text << f.rdbuf();
+    return cg::parse_json(text.str());
+}
+
+const cg::rt::Scene& distributed_scene(int which) {
+    static const cg::rt::Scene scenes[3] = {
+        [] {
+            cg::json j = golden_scene("reference");
+            j["camera"]["size"] = {160, 120};
+            j["settings"]["samples_per_pixel"] = 16;
+            return cg::rt::scene_from_json(j);
+        }(),
+        [] {
+            cg::json j = golden_scene("soft-shadows");
+            j["settings"]["samples_per_pixel"] = 16;
+            return cg::rt::scene_from_json(j);
+        }(),
+        cg::rt::scene_from_json(golden_scene("depth-of-field")),
+    };
+    return scenes[which];
+}
+
+// range(0): the scene (0 reference, 1 soft shadows, 2 depth of field); range(1): threads.
+void BM_DistributionRayTracer_16spp_Plain(benchmark::State& state) {
+    const cg::rt::Scene& s = distributed_scene(static_cast<int>(state.range(0)));
+    std::uint64_t rays = 0;
+    for (auto _ : state) {
+        const cg::rt::Image img = cg::rt::render(s, static_cast<int>(state.range(1)));
+        rays += img.rays.total();
+        benchmark::DoNotOptimize(img.rgba.data());
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(rays));
+}
+BENCHMARK(BM_DistributionRayTracer_16spp_Plain)
+    ->Args({0, 1})
+    ->Args({0, 2})
+    ->Args({1, 1})
+    ->Args({2, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_DistributionRayTracer_16spp_StateMachine(benchmark::State& state) {
+    cg::RayTracer::Input in;
+    in.scene = distributed_scene(static_cast<int>(state.range(0)));
+    in.granularity = cg::RayTracer::Granularity::Pixels;
+    const cg::RayTracer::State start = cg::RayTracer::start(in);
+    std::uint64_t rays = 0;
+    for (auto _ : state) {
+        const cg::RayTracer::Result r = cg::run_to_end<cg::RayTracer>(start);
+        rays += r.rays.total();
+        benchmark::DoNotOptimize(r.image.data());
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(rays));
+}
+BENCHMARK(BM_DistributionRayTracer_16spp_StateMachine)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_DistributionRayTracer_TreeStepAndPicture(benchmark::State& state) {
+    cg::bench::step_and_picture(state, "ray-tracer", [](cg::json& in) {
+        in = golden_scene("soft-shadows");
+        in["camera"]["size"] = {48, 36};
+        in["stepping"] = {{"granularity", "ray-tree"}, {"pixel", {16.5, 14.5}}};
+    });
+}
+BENCHMARK(BM_DistributionRayTracer_TreeStepAndPicture)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
