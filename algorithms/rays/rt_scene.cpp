@@ -96,8 +96,10 @@ double scene_tests(const Scene& s) {
 }
 
 double pixel_work(const Scene& s) {
-    return double(s.settings.samples_per_pixel) * tree_rays(s) * (1.0 + shadow_rays(s)) *
-           std::max<double>(1, scene_tests(s));
+    const double n = s.settings.samples_per_pixel;
+    // Poisson dart throwing compares each dart with the points kept so far: about n² tests.
+    const double darts = s.settings.pattern == sampling::Pattern::Poisson && n > 1 ? n * n : 0;
+    return n * tree_rays(s) * (1.0 + shadow_rays(s)) * std::max<double>(1, scene_tests(s)) + darts;
 }
 
 void validate(const Scene& s) {

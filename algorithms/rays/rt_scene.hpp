@@ -170,6 +170,7 @@ double tree_rays(const Scene& s);      // rays in one primary ray's tree, at mos
                                        // materials branch gloss_samples ways)
 double scene_tests(const Scene& s);    // ray-object tests per ray: objects, CSG leaves each
 double pixel_work(const Scene& s);     // samples × tree_rays × (1 + shadow rays) × scene_tests
+                                       // (+ samples² for Poisson dart throwing)
 constexpr double kMaxPixelWork = 1e7;  // one pixel (one step): well under a second
 constexpr double kMaxWork = 2e10;      // the whole image: a few minutes at most
 

@@ -304,6 +304,13 @@ void Sampling::validate(const Input& in) {
                          std::string("must be a square number n × n (1, 4, 9, 16, …) for the ") +
                              sampling::pattern_id(in.pattern) + " pattern (got " +
                              std::to_string(in.samples) + ")");
+    if (in.pattern == sampling::Pattern::Poisson &&
+        double(in.width) * in.height * in.samples * in.samples > kMaxPoissonWork)
+        throw InputError("supersampling.samples",
+                         "makes Poisson dart throwing cost about " +
+                             num(double(in.width) * in.height * in.samples * in.samples) +
+                             " distance tests for the image (samples² per pixel); at most 10⁹ "
+                             "are allowed: use fewer samples or pixels");
     if (double(in.width) * in.height * in.samples > kMaxImageWork)
         throw InputError("supersampling.samples",
                          "makes " + num(double(in.width) * in.height * in.samples) +

@@ -48,6 +48,7 @@ struct Sampling {
     static constexpr int kMaxSide = 256;           // 2D: pixels a side
     static constexpr int kMaxSupersamples = 256;   // 2D: samples per pixel
     static constexpr double kMaxImageWork = 4e6;   // 2D: width × height × samples
+    static constexpr double kMaxPoissonWork = 1e9;  // ... × samples again for Poisson darts
     static constexpr double kMaxFrequency = 1e12;  // |f|, f_s, 1/duration
 
     enum class Mode : std::uint8_t { Signal, Image };
