@@ -8,6 +8,7 @@
 #include "core/format.hpp"
 #include "rays/csg_ray.hpp"
 #include "rays/quadric_mesh.hpp"
+#include "sampling/patterns.hpp"
 
 namespace cg {
 
@@ -38,6 +39,9 @@ const Spec& RayTracer::spec() {
             "        c += k_r · trace(mirror ray r = d − 2 (d·n) n, depth + 1)",
             "        c += k_t · trace(refracted ray (Snell), depth + 1)",
             "    return c",
+            "distributed: colour(i, j) ← Σ w_k trace(ray k: pixel point, lens point, time) / Σ w_k",
+            "    area light: M shadow rays to points over its area, each adding 1/M of its terms",
+            "    glossy: c += k_r/G · trace(ray drawn from the Phong lobe about r), G times",
         },
         {
             {"pixel", "a pixel's colour is computed (its whole ray tree)"},
@@ -45,7 +49,8 @@ const Spec& RayTracer::spec() {
             {"primary", "the primary ray from the eye through the pixel is cast"},
             {"hit", "the nearest intersection: its point, normal and the ambient term"},
             {"texture",
-             "the hit's textures: (u, v) and the texel lookup, the solid texture, the bumped normal"},
+             "the hit's textures: (u, v) and the texel lookup, the solid texture, the bumped "
+             "normal"},
             {"miss", "the ray hits nothing: it returns the background colour"},
             {"lit", "the shadow ray reaches the light: its diffuse and specular terms are added"},
             {"shadowed", "the shadow ray is blocked: the point is in this light's shadow"},
@@ -57,6 +62,10 @@ const Spec& RayTracer::spec() {
             {"depth-limit", "the depth limit stops the secondary rays here"},
             {"return", "a ray's colour is weighted and summed into the ray that cast it"},
             {"colour", "the primary ray's colour is the pixel's colour"},
+            {"area-light",
+             "shadow rays over an area light: the share of its points the hit sees, and their "
+             "terms"},
+            {"glossy", "a reflected ray drawn from the Phong lobe about the mirror direction"},
         },
     };
     return s;
@@ -80,7 +89,9 @@ const char* event_id(Event e) {
                                 "depth-limit",
                                 "return",
                                 "colour",
-                                "texture"};
+                                "texture",
+                                "area-light",
+                                "glossy"};
     return ids[static_cast<int>(e)];
 }
 
@@ -111,6 +122,10 @@ int event_line(Event e) {
             return 12;
         case Event::Texture:
             return 6;
+        case Event::AreaLight:
+            return 14;
+        case Event::Glossy:
+            return 15;
         case Event::None:
             break;
     }
@@ -155,9 +170,19 @@ RayTracer::State RayTracer::start(const Input& in) {
     if (in.granularity == Granularity::RayTree) {
         s.pixel_i = std::min(static_cast<int>(std::floor(in.pixel.x)), c.width - 1);
         s.pixel_j = std::min(static_cast<int>(std::floor(in.pixel.y)), c.height - 1);
-        // A small image is cheap to render whole: the picture shows the pixel inside it.
-        if (!in.explicit_ray && static_cast<long long>(c.width) * c.height <= kPreviewPixels)
+        // A small image is cheap to render whole: the picture shows the pixel inside it (a
+        // distributed one only when that stays cheap).
+        const bool cheap = !s.prepared->distributed ||
+                           rt::pixel_work(in.scene) * c.width * c.height <= kPreviewWork;
+        if (!in.explicit_ray && static_cast<long long>(c.width) * c.height <= kPreviewPixels &&
+            cheap)
             s.preview = Shared<std::vector<std::uint32_t>>(rt::render(in.scene, 1).rgba);
+        if (s.prepared->distributed) {
+            s.rng = in.explicit_ray ? rt::pixel_rng(in.scene, -1, -1)
+                                    : rt::pixel_rng(in.scene, s.pixel_i, s.pixel_j);
+            s.samples = in.explicit_ray ? std::vector<rt::PixelSample>(1)
+                                        : rt::pixel_samples(in.scene, s.pixel_i, s.pixel_j, s.rng);
+        }
     } else {
         s.image.reset(c.width, c.height);
     }
@@ -239,20 +264,27 @@ void RayTracer::advance_tree(State& s) {
     const rt::Scene& sc = in.scene;
     const rt::Prepared& p = *s.prepared;
 
-    if (s.tree.empty()) {  // the primary ray
+    const bool distributed = p.distributed;
+    if (s.stack.empty()) {  // the primary ray (of the next pixel sample)
         RayNode n;
         n.kind = RayKind::Primary;
         if (in.explicit_ray) {
             n.origin = in.ray_origin;
             n.direction = in.ray_direction;
+        } else if (distributed) {
+            const rt::PixelSample& ps = s.samples[s.next_sample];
+            rt::primary_ray(p, sc.camera, s.pixel_i, s.pixel_j, ps, n.origin, n.direction);
+            n.time = ps.time;
         } else {
             n.origin = p.view.eye;
             n.direction = rt::screen_point(p.view, s.pixel_i + 0.5, s.pixel_j + 0.5) - p.view.eye;
         }
+        if (distributed) n.sample = s.next_sample++;
+        const int id = static_cast<int>(s.tree.size());
         s.tree.push_back(n);
-        s.stack.push_back({0, Next::Cast, 0, Color(0.0)});
+        s.stack.push_back({id, Next::Cast, 0, Color(0.0)});
         ++s.rays.primary;
-        s.active = 0;
+        s.active = id;
         s.last_event = Event::Primary;
         return;
     }
@@ -263,7 +295,8 @@ void RayTracer::advance_tree(State& s) {
         s.active = f.node;
         switch (f.next) {
             case Next::Cast: {
-                ray.hit = rt::nearest_hit(p, ray.origin, ray.direction);
+                ray.hit = rt::nearest_hit(p, ray.origin, ray.direction, kRayEpsilon, Quadric::kInf,
+                                          ray.time);
                 ray.traced = true;
                 if (ray.hit.object < 0) {
                     f.c = sc.background;
@@ -274,13 +307,14 @@ void RayTracer::advance_tree(State& s) {
                 const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
                 // The primary ray of a pixel carries its differential (for mipmaps), as in
                 // rt::pixel_color.
-                const bool pixel_ray = f.node == 0 && !in.explicit_ray;
-                const rt::RayDifferential diff = rt::pixel_differential(p.view, s.pixel_i, s.pixel_j);
+                const bool pixel_ray = ray.parent < 0 && !in.explicit_ray;
+                const rt::RayDifferential diff =
+                    rt::pixel_differential(p.view, s.pixel_i, s.pixel_j);
                 rt::SurfaceDetail detail;
                 const bool textured = m.tex.any();
-                ray.surface = rt::surface_at(sc, p, ray.hit, ray.origin, ray.direction,
-                                             pixel_ray ? &diff : nullptr,
-                                             textured ? &detail : nullptr);
+                ray.surface = rt::moving_surface_at(sc, p, ray.hit, ray.origin, ray.direction,
+                                                    pixel_ray ? &diff : nullptr, ray.time,
+                                                    textured ? &detail : nullptr);
                 if (textured) {
                     ray.detail = static_cast<int>(s.details.size());
                     s.details.push_back(detail);
@@ -303,6 +337,51 @@ void RayTracer::advance_tree(State& s) {
                 const int k = f.light++;
                 const rt::Material& m = sc.materials[p.objects[ray.hit.object].material];
                 const dvec3 v = -unit(ray.direction);
+                if (distributed && sc.lights[k].area != rt::Light::Area::None) {
+                    // Shadow rays over the light's area, all in this step.
+                    const std::vector<dvec3> points = rt::light_points(sc.lights[k], s.rng);
+                    const double share = 1.0 / double(points.size());
+                    rt::Light at = sc.lights[k];
+                    const int node = f.node;
+                    const rt::Hit hit = ray.hit;
+                    const rt::Surface surface = ray.surface;
+                    const int depth = ray.depth;
+                    const double time = ray.time;
+                    s.area_lit = 0, s.area_rays = 0;
+                    for (std::size_t q = 0; q < points.size(); ++q) {
+                        at.position = points[q];
+                        const rt::LightTerm lt =
+                            rt::light_term(sc, at, surface.kd, m, hit.point, surface.normal, v);
+                        if (!lt.facing) continue;
+                        if (sc.settings.shadows) {
+                            RayNode sh;
+                            sh.kind = RayKind::Shadow;
+                            sh.parent = node;
+                            sh.depth = depth;
+                            sh.time = time;
+                            sh.origin = rt::offset_point(p, hit.point, hit.normal);
+                            sh.direction = lt.l;
+                            sh.light = k;
+                            sh.light_sample = static_cast<int>(q);
+                            sh.light_point = points[q];
+                            sh.t_max = lt.distance;
+                            sh.blocker = rt::first_blocker(p, sh.origin, sh.direction, kRayEpsilon,
+                                                           lt.distance, time);
+                            sh.traced = true;
+                            ++s.rays.shadow;
+                            ++s.area_rays;
+                            const bool blocked = sh.blocker >= 0;
+                            if (!blocked) sh.color = (lt.diffuse + lt.specular) * share;
+                            s.tree.push_back(sh);
+                            if (blocked) continue;
+                        }
+                        ++s.area_lit;
+                        s.stack.back().c += (lt.diffuse + lt.specular) * share;
+                    }
+                    s.active = node;
+                    s.last_event = Event::AreaLight;
+                    return;
+                }
                 s.last_term = rt::light_term(sc, sc.lights[k], ray.surface.kd, m, ray.hit.point,
                                              ray.surface.normal, v);
                 const rt::LightTerm& lt = s.last_term;
@@ -319,8 +398,9 @@ void RayTracer::advance_tree(State& s) {
                     sh.direction = lt.l;
                     sh.light = k;
                     sh.t_max = lt.distance;
-                    sh.blocker =
-                        rt::first_blocker(p, sh.origin, sh.direction, kRayEpsilon, lt.distance);
+                    sh.time = ray.time;
+                    sh.blocker = rt::first_blocker(p, sh.origin, sh.direction, kRayEpsilon,
+                                                   lt.distance, ray.time);
                     sh.traced = true;
                     ++s.rays.shadow;
                     const bool blocked = sh.blocker >= 0;
@@ -353,7 +433,42 @@ void RayTracer::advance_tree(State& s) {
                 RayNode child;
                 child.parent = f.node;
                 child.depth = ray.depth + 1;
+                child.time = ray.time;
                 rt::SecondaryRay sec;
+                if (f.next == Next::Secondary && wants_reflect && distributed && m.gloss > 0) {
+                    // Glossy: G rays from the Phong lobe about the mirror direction, one a step.
+                    sec = rt::mirror_ray(p, ray.hit, dn);
+                    s.gloss_skipped = 0;
+                    bool cast = false;
+                    while (f.gloss < m.gloss_samples) {
+                        const dvec3 dir = rt::glossy_direction(sec.direction, m.gloss, s.rng);
+                        ++f.gloss;
+                        if (!(glm::dot(dir, ray.hit.normal) > 0)) {  // below the surface
+                            ++s.gloss_skipped;
+                            continue;
+                        }
+                        sec.direction = dir;
+                        cast = true;
+                        break;
+                    }
+                    if (!cast) {
+                        f.next = Next::Refract;
+                        continue;
+                    }
+                    if (f.gloss == m.gloss_samples) f.next = Next::Refract;
+                    child.kind = RayKind::Reflected;
+                    child.glossy = true;
+                    child.origin = sec.origin;
+                    child.direction = sec.direction;
+                    child.weight = m.kr * (1.0 / double(m.gloss_samples));
+                    ++s.rays.reflected;
+                    const int id = static_cast<int>(s.tree.size());
+                    s.tree.push_back(child);
+                    s.stack.push_back({id, Next::Cast, 0, Color(0.0)});
+                    s.active = id;
+                    s.last_event = Event::Glossy;
+                    return;
+                }
                 if (f.next == Next::Secondary) {
                     f.next = Next::Refract;
                     if (!wants_reflect) continue;
@@ -384,6 +499,19 @@ void RayTracer::advance_tree(State& s) {
                 const int node = f.node;
                 s.stack.pop_back();
                 s.active = node;
+                if (s.stack.empty() && distributed) {  // one pixel sample done
+                    const rt::PixelSample& ps = s.samples[s.tree[node].sample];
+                    s.sum += ps.weight * s.tree[node].color;
+                    s.sum_w += ps.weight;
+                    if (s.next_sample < static_cast<int>(s.samples.size())) {
+                        s.last_event = Event::Return;
+                        return;
+                    }
+                    s.pixel_color = s.sum / s.sum_w;
+                    s.phase = Phase::Done;
+                    s.last_event = Event::Colour;
+                    return;
+                }
                 if (s.stack.empty()) {
                     s.pixel_color = s.tree[0].color;
                     s.phase = Phase::Done;
@@ -553,8 +681,40 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
     add("depth", static_cast<long long>(n.depth));
     add("origin", vec(n.origin));
     add("direction", vec(n.direction));
+    const bool distributed = s.prepared->distributed;
     switch (s.last_event) {
         case Event::Primary:
+            if (distributed && !in.explicit_ray) {
+                const rt::PixelSample& ps = s.samples[n.sample];
+                const rt::Camera& c = sc.camera;
+                std::string over = "over the pixel's area (" +
+                                   std::string(sampling::pattern_id(sc.settings.pattern)) +
+                                   " pattern, " + sampling::filter_id(sc.settings.filter) +
+                                   " filter)";
+                if (c.aperture > 0) over += ", the lens aperture (depth of field)";
+                if (c.shutter > 0) over += ", the shutter time (motion blur)";
+                info.narration =
+                    "Pixel (" + std::to_string(s.pixel_i) + ", " + std::to_string(s.pixel_j) +
+                    "), sample " + std::to_string(n.sample + 1) + " of " +
+                    std::to_string(s.samples.size()) + ": primary rays are distributed " + over +
+                    ". This one crosses the pixel at (" + num(ps.pixel.x, 4) + ", " +
+                    num(ps.pixel.y, 4) + "), filter weight " + num(ps.weight, 4) +
+                    (c.aperture > 0
+                         ? "; it leaves the lens at " + num(n.origin, 4) + " (lens point " +
+                               num(ps.lens, 3) + " × aperture) toward the focal plane"
+                         : "") +
+                    (c.shutter > 0 ? "; at time " + num(ps.time, 4) : "") + ": ray " + name +
+                    " = " + num(n.origin, 4) + " + t " + num(n.direction, 4) + ".";
+                info.line = 13;
+                info.math = "w_k = " + tex(ps.weight, 4) + ",\\; \\tau = " + tex(ps.time, 4);
+                add("sample", static_cast<long long>(n.sample + 1));
+                add("pixel point",
+                    std::vector<double>{s.pixel_i + ps.pixel.x, s.pixel_j + ps.pixel.y});
+                add("lens", vec(ps.lens));
+                add("time", ps.time);
+                add("weight", ps.weight);
+                break;
+            }
             if (in.explicit_ray)
                 info.narration = "The primary ray " + name +
                                  ": E + t d with E = " + num(n.origin, 4) +
@@ -659,16 +819,82 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
                              " = the limit: no mirror or refracted rays from here.";
             break;
         case Event::Return: {
-            const RayNode& parent = s.tree[n.parent];
+            if (n.parent < 0) {  // a pixel sample's primary ray
+                const rt::PixelSample& ps = s.samples[n.sample];
+                info.narration = "Sample " + std::to_string(n.sample + 1) + " of " +
+                                 std::to_string(s.samples.size()) + ": ray " + name + " returns " +
+                                 num(n.color, 4) + "; × its weight " + num(ps.weight, 4) +
+                                 " it joins the pixel's sum, now " + num(s.sum, 4) +
+                                 " over Σw = " + num(s.sum_w, 4) + ".";
+                add("returned", colour_vec(n.color));
+                add("sum", colour_vec(s.sum));
+                add("sum_w", s.sum_w);
+                break;
+            }
             info.narration = "Ray " + name + " returns " + num(n.color, 4) + "; × " +
                              num(n.weight, 4) + " is added to " + ray_label(s.tree, n.parent) +
                              ", whose colour so far is " + num(s.stack.back().c, 4) + ".";
-            (void)parent;
             add("returned", colour_vec(n.color));
             add("weight", colour_vec(n.weight));
             break;
         }
+        case Event::AreaLight: {
+            const int k = s.stack.back().light - 1;
+            const rt::Light& l = sc.lights[k];
+            const char* shape = l.area == rt::Light::Area::Rectangle ? "rectangle" : "disc";
+            info.narration =
+                "Light " + std::to_string(k) + " is an area light (a " + shape +
+                "): " + std::to_string(l.samples) + " shadow rays are distributed over its area, " +
+                (sc.settings.shadows
+                     ? std::to_string(s.area_rays) +
+                           " of them cast (points in front of the "
+                           "surface), " +
+                           std::to_string(s.area_lit) + " reach the light"
+                     : "shadows off, " + std::to_string(s.area_lit) + " points in front") +
+                ": each adds 1/" + std::to_string(l.samples) +
+                " of its point's diffuse and specular terms, so the point sees " +
+                num(double(s.area_lit) / l.samples, 4) + " of the light" +
+                (s.area_lit > 0 && s.area_lit < l.samples ? " — a penumbra" : "") + ".";
+            info.math =
+                "\\frac{1}{M}\\sum_m v_m\\,(k_d (n \\cdot l_m) + k_s (r_m \\cdot v)^p) I,\\; "
+                "M = " +
+                std::to_string(l.samples);
+            add("light", static_cast<long long>(k));
+            add("shadow rays", static_cast<long long>(s.area_rays));
+            add("reaching the light", static_cast<long long>(s.area_lit));
+            break;
+        }
+        case Event::Glossy: {
+            const RayNode& parent = s.tree[n.parent];
+            const rt::Material& m = sc.materials[s.prepared->objects[parent.hit.object].material];
+            const dvec3 mirror = rt::reflect(unit(parent.direction), parent.hit.normal);
+            const double angle =
+                std::acos(std::clamp(glm::dot(unit(n.direction), mirror), -1.0, 1.0)) * 180 / M_PI;
+            info.narration =
+                "Glossy ray " + name + " (" + std::to_string(s.stack[s.stack.size() - 2].gloss) +
+                " of " + std::to_string(m.gloss_samples) + "): reflected rays of " + m.name +
+                " are distributed over the Phong lobe about the mirror direction r = " +
+                num(mirror, 4) + ", density ∝ cos^" + num(m.gloss, 4) +
+                " of the angle to r; this one is " + num(angle, 3) + "° off it, weighted k_r/" +
+                std::to_string(m.gloss_samples) + " = " + num(n.weight, 4) +
+                (s.gloss_skipped > 0 ? " (" + std::to_string(s.gloss_skipped) +
+                                           " drawn below the surface before it add nothing)"
+                                     : "") +
+                ".";
+            info.math = "\\cos\\theta = \\xi^{1/(p+1)},\\; \\theta = " + tex(angle, 3) + "^\\circ";
+            add("angle to r", angle);
+            add("weight", colour_vec(n.weight));
+            break;
+        }
         case Event::Colour:
+            if (distributed && !in.explicit_ray) {
+                info.narration = "The pixel's colour is the filtered average of its " +
+                                 std::to_string(s.samples.size()) + " samples: " + num(s.sum, 4) +
+                                 " / " + num(s.sum_w, 4) + " = " + num(s.pixel_color, 4) +
+                                 ", stored as " + rgb8_text(rt::to_rgba8(s.pixel_color)) + ".";
+                info.line = 13;
+                break;
+            }
             info.narration = "The primary ray returns " + num(s.pixel_color, 4) +
                              ": the pixel's colour, stored as " +
                              rgb8_text(rt::to_rgba8(s.pixel_color)) +
@@ -764,6 +990,25 @@ void draw_objects(const rt::Scene& sc, double extent, Scene& scene) {
         } else {
             scene.points3.push_back({l.position, name, {Role::Active}, 7.0f});
         }
+        if (l.area == rt::Light::Area::Rectangle) {
+            const dvec3 a = 0.5 * l.edge_u, b = 0.5 * l.edge_v;
+            scene.faces3.push_back(
+                {{l.position - a - b, l.position + a - b, l.position + a + b, l.position - a + b},
+                 {Role::Active, 1.5f},
+                 0.35f,
+                 true,
+                 true});
+        } else if (l.area == rt::Light::Area::Disc) {
+            const dvec3 n3 = unit(l.normal);
+            const dvec3 e1 = unit(std::fabs(n3.x) < 0.9 ? glm::cross(n3, dvec3(1, 0, 0))
+                                                        : glm::cross(n3, dvec3(0, 1, 0)));
+            const dvec3 e2 = glm::cross(n3, e1);
+            std::vector<dvec3> rim;
+            for (int q = 0; q < 24; ++q)
+                rim.push_back(l.position + l.radius * (std::cos(q * M_PI / 12) * e1 +
+                                                       std::sin(q * M_PI / 12) * e2));
+            scene.faces3.push_back({std::move(rim), {Role::Active, 1.5f}, 0.35f, true, true});
+        }
     }
 }
 
@@ -808,7 +1053,9 @@ void draw_tree(const RayTracer::State& s, double extent, Scene& scene) {
         const dvec3 d = unit(n.direction);
         if (n.kind == RayKind::Shadow) {
             const rt::Light& l = sc.lights[n.light];
-            const dvec3 end = l.directional ? n.origin + 0.6 * extent * d : l.position;
+            const dvec3 end = l.directional         ? n.origin + 0.6 * extent * d
+                              : n.light_sample >= 0 ? n.light_point
+                                                    : l.position;
             if (n.blocker >= 0) {
                 const double t = rt::intersect_object(s.prepared->objects[n.blocker], n.origin,
                                                       n.direction, kRayEpsilon);
@@ -913,6 +1160,15 @@ void RayTracer::draw(const State& s, Scene& scene) {
 
     draw_objects(sc, extent, scene);
     draw_camera(*s.prepared, hi, hj, scene);
+    if (sc.camera.aperture > 0) {  // the thin lens, across the view direction at the eye
+        const rt::View& v = s.prepared->view;
+        std::vector<dvec3> rim;
+        for (int q = 0; q < 24; ++q)
+            rim.push_back(v.eye + sc.camera.aperture * (std::cos(q * M_PI / 12) * v.u +
+                                                        std::sin(q * M_PI / 12) * v.v));
+        scene.faces3.push_back({std::move(rim), {Role::Window, 1.5f}, 0.3f, true, true});
+        scene.labels3.push_back({v.eye + sc.camera.aperture * v.v, "lens", {Role::Window}});
+    }
     if (in.granularity == Granularity::RayTree) {
         draw_tree(s, extent, scene);
     } else if (s.last_i >= 0) {  // the last pixel's primary ray, to its hit
@@ -941,6 +1197,8 @@ RayTracer::Result RayTracer::result(const State& s) {
         r.color = s.pixel_color;
         r.tree = s.tree;
         r.details = s.details;
+        r.distributed = s.prepared->distributed;
+        r.samples = s.samples;
     } else {
         r.image = s.image.pixels();
     }

@@ -15,6 +15,14 @@
 // bit for bit the plain tracer's (the tests check this on random scenes).
 //
 // Ray casting is the degenerate setting: settings.max_depth = 0 and no shadows.
+//
+// Distribution ray tracing (rt_scene.hpp): the ray tree of a distributed pixel holds one primary
+// ray per pixel sample, each stepped through its own tree in turn (its position in the pixel,
+// lens point and time told at its `primary` step); an area light is one `area-light` step that
+// casts all its shadow rays over the light's area; a glossy material casts its reflected rays one
+// `glossy` step each, drawn from the Phong lobe about the mirror direction. The pixel's colour is
+// the filtered average of the primary rays' colours. The random numbers come from the pixel's
+// generator in the plain tracer's order, so the colour is still the plain tracer's bit for bit.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +43,7 @@ struct RayTracer {
     // A ray-tree run of an image of at most this many pixels also renders the whole image at
     // its start, for the picture (the pixel shown inside it).
     static constexpr long long kPreviewPixels = 96 * 72;
+    static constexpr double kPreviewWork = 3e7;  // ... and, distributed, this many ray tests
 
     struct Input {
         rt::Scene scene;
@@ -65,6 +74,14 @@ struct RayTracer {
         rt::Color weight{1.0};  // the share of it its parent adds (k_r, k_t)
         bool total_internal = false;  // a mirror ray cast by total internal reflection
         bool returned = false;        // its colour has been summed into its parent's
+        // Distribution ray tracing: a primary ray's pixel sample (-1: not distributed), its
+        // point of the light's area (a shadow ray's, -1: a point light), whether a reflected
+        // ray was drawn from the glossy lobe; every ray's time.
+        int sample = -1;
+        int light_sample = -1;
+        bool glossy = false;
+        double time = 0;
+        glm::dvec3 light_point{0.0};  // a shadow ray's end on an area light
         bool operator==(const RayNode&) const = default;
     };
 
@@ -75,6 +92,7 @@ struct RayTracer {
         Next next = Next::Cast;
         int light = 0;     // the next light to test
         rt::Color c{0.0};  // the colour so far
+        int gloss = 0;     // glossy rays drawn so far
         bool operator==(const Frame&) const = default;
     };
 
@@ -114,7 +132,9 @@ struct RayTracer {
         DepthLimit,
         Return,
         Colour,
-        Texture
+        Texture,
+        AreaLight,
+        Glossy
     };
 
     struct State {
@@ -135,6 +155,15 @@ struct RayTracer {
         int active = -1;             // the ray the last step worked on
         rt::LightTerm last_term;     // the last light step's terms
         rt::Color pixel_color{0.0};  // the primary ray's colour, once returned
+        // distribution: the pixel's generator and samples, the next sample, the running sums,
+        // and the last area light step's count of shadow rays that reached the light
+        Rng rng{0};
+        std::vector<rt::PixelSample> samples;
+        int next_sample = 0;
+        rt::Color sum{0.0};
+        double sum_w = 0;
+        int area_lit = 0, area_rays = 0;
+        int gloss_skipped = 0;  // glossy rays drawn below the surface before the last one
         Shared<std::vector<std::uint32_t>>
             preview;                     // a cheap picture around the pixel (may be empty)
         Event last_event = Event::None;  // what the last step did
@@ -152,6 +181,8 @@ struct RayTracer {
         rt::Color color{0.0};
         std::vector<RayNode> tree;
         std::vector<rt::SurfaceDetail> details;
+        bool distributed = false;
+        std::vector<rt::PixelSample> samples;  // the pixel's samples (distributed)
         bool operator==(const Result&) const = default;
     };
 
@@ -165,7 +196,7 @@ struct RayTracer {
     static std::size_t bytes(const State& s) {
         return s.image.bytes() + s.tree.capacity() * sizeof(RayNode) +
                s.details.capacity() * sizeof(rt::SurfaceDetail) +
-               s.stack.capacity() * sizeof(Frame);
+               s.stack.capacity() * sizeof(Frame) + s.samples.capacity() * sizeof(rt::PixelSample);
     }
 
     // Exam practice (ray_tracer_exam.cpp): one ray into a small scene.

@@ -13,7 +13,12 @@
 //           tested by a shadow ray from the primary hit], "reflected": the mirror ray's
 //           direction | null, "refracted": the refracted ray's direction | null,
 //           "tree": [{"ray", "kind", "parent", "depth", "origin", "direction", "object", "t",
-//           "color", "weight"}, …]}
+//           "color", "weight"}, …]; distributed scenes also give each node its "time", a
+//           primary ray its "sample", a shadow ray to an area light its "light_sample", a glossy
+//           ray "glossy": true, and "distributed": {"primary": what primary rays are spread
+//           over ("pixel area", "lens aperture", "shutter time"), "shadow": "light area" | null,
+//           "reflected": "Phong lobe about the mirror direction" | null, "samples": [[x, y,
+//           weight, time], …]}}
 #include "io/registry.hpp"
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
@@ -144,6 +149,12 @@ struct JsonIo<RayTracer> {
                       {"depth", n.depth},
                       {"origin", to_json(n.origin)},
                       {"direction", to_json(n.direction)}};
+            if (r.distributed) {
+                if (n.sample >= 0) node["sample"] = n.sample;
+                if (n.light_sample >= 0) node["light_sample"] = n.light_sample;
+                if (n.glossy) node["glossy"] = true;
+                node["time"] = n.time;
+            }
             if (n.kind == RayKind::Shadow) {
                 node["light"] = n.light;
                 node["blocked"] = n.blocker >= 0;
@@ -174,7 +185,31 @@ struct JsonIo<RayTracer> {
         j["reflected"] = std::move(reflected);
         j["refracted"] = std::move(refracted);
         j["tree"] = std::move(tree);
+        if (r.distributed) j["distributed"] = distributed_json(r);
         return j;
+    }
+
+    // Which quantity each kind of ray is distributed over in this scene, and the pixel's
+    // samples [x, y, weight, time] (x, y in the pixel, from its bottom-left corner).
+    static json distributed_json(const RayTracer::Result& r) {
+        json primary = json::array({"pixel area"});
+        bool lens = false, shutter = false, area = false, glossy = false;
+        for (const auto& n : r.tree) {
+            area = area || n.light_sample >= 0;
+            glossy = glossy || n.glossy;
+            shutter = shutter || n.time > 0;
+        }
+        for (const auto& ps : r.samples) lens = lens || ps.lens != glm::dvec2(0.0);
+        if (lens) primary.push_back("lens aperture");
+        if (shutter) primary.push_back("shutter time");
+        json samples = json::array();
+        for (const auto& ps : r.samples)
+            samples.push_back(json::array({ps.pixel.x, ps.pixel.y, ps.weight, ps.time}));
+        return json{
+            {"primary", std::move(primary)},
+            {"shadow", area ? json("light area") : json(nullptr)},
+            {"reflected", glossy ? json("Phong lobe about the mirror direction") : json(nullptr)},
+            {"samples", std::move(samples)}};
     }
 
     static json example();

@@ -49,17 +49,45 @@ void check_coordinates(dvec3 p, const std::string& field) {
                 "must be a finite number of magnitude at most 1e12 (got " + num(p[k]) + ")");
 }
 
+bool distributed(const Scene& s) {
+    if (s.settings.samples_per_pixel > 1 || s.camera.aperture > 0 || s.camera.shutter > 0)
+        return true;
+    for (const Light& l : s.lights)
+        if (l.area != Light::Area::None) return true;
+    for (const Material& m : s.materials)
+        if (m.gloss > 0) return true;
+    return false;
+}
+
 double tree_rays(const Scene& s) {
     bool mirrors = false, glass = false;
+    int gloss = 1;  // the most reflected rays one hit casts
     for (const Material& m : s.materials) {
-        mirrors = mirrors || (s.settings.reflections && any_positive(m.kr));
+        const bool mirror = s.settings.reflections && any_positive(m.kr);
+        mirrors = mirrors || mirror;
         glass = glass || (s.settings.refractions && any_positive(m.kt));
+        if (mirror && m.gloss > 0) gloss = std::max(gloss, m.gloss_samples);
     }
     const int d = s.settings.max_depth;
+    if (gloss > 1) {  // a tree branching (gloss + 1) or gloss ways per level
+        const double b = mirrors * double(gloss) + glass;
+        double n = 1, level = 1;
+        for (int k = 0; k < d; ++k) n += (level *= b);
+        return n;
+    }
     if (mirrors && glass) return std::ldexp(1.0, d + 1) - 1;
     if (mirrors || glass) return d + 1.0;
     return 1;
 }
+
+namespace {
+// Shadow rays per hit: one per point light, `samples` per area light.
+double shadow_rays(const Scene& s) {
+    double n = 0;
+    for (const Light& l : s.lights) n += l.area == Light::Area::None ? 1.0 : double(l.samples);
+    return n;
+}
+}  // namespace
 
 double scene_tests(const Scene& s) {
     double n = 0;
@@ -68,8 +96,10 @@ double scene_tests(const Scene& s) {
 }
 
 double pixel_work(const Scene& s) {
-    return tree_rays(s) * (1.0 + static_cast<double>(s.lights.size())) *
-           std::max<double>(1, scene_tests(s));
+    const double n = s.settings.samples_per_pixel;
+    // Poisson dart throwing compares each dart with the points kept so far: about n² tests.
+    const double darts = s.settings.pattern == sampling::Pattern::Poisson && n > 1 ? n * n : 0;
+    return n * tree_rays(s) * (1.0 + shadow_rays(s)) * std::max<double>(1, scene_tests(s)) + darts;
 }
 
 void validate(const Scene& s) {
@@ -102,6 +132,26 @@ void validate(const Scene& s) {
                                                    std::to_string(s.settings.max_depth) + ")");
     check_colour(s.background, "background");
     check_colour(s.ambient, "ambient");
+    const int spp = s.settings.samples_per_pixel;
+    if (spp < 1 || spp > kMaxSamplesPerPixel)
+        throw InputError("settings.samples_per_pixel", "must be between 1 and " +
+                                                           std::to_string(kMaxSamplesPerPixel) +
+                                                           " (got " + std::to_string(spp) + ")");
+    if (spp > 1 && sampling::is_grid(s.settings.pattern) && sampling::grid_side(spp) == 0)
+        throw InputError("settings.samples_per_pixel",
+                         std::string("must be a square number n × n (4, 9, 16, …) for the ") +
+                             sampling::pattern_id(s.settings.pattern) + " pattern (got " +
+                             std::to_string(spp) + ")");
+    if (!(c.aperture >= 0 && c.aperture <= 1e6))
+        throw InputError("camera.aperture",
+                         "must be a lens radius between 0 and 1e6 (got " + num(c.aperture) + ")");
+    if (!(c.focal_distance >= 0 && c.focal_distance <= kMaxCoordinate))
+        throw InputError("camera.focal_distance",
+                         "must be a distance between 0 (the look-at point's) and 1e12 (got " +
+                             num(c.focal_distance) + ")");
+    if (!(c.shutter >= 0 && c.shutter <= 1e6))
+        throw InputError("camera.shutter",
+                         "must be a time span between 0 and 1e6 (got " + num(c.shutter) + ")");
 
     if (s.materials.empty()) throw InputError("materials", "must list at least one material");
     for (std::size_t i = 0; i < s.materials.size(); ++i) {
@@ -118,6 +168,14 @@ void validate(const Scene& s) {
         if (!(m.ior >= 0.01 && m.ior <= 100))
             throw InputError(f + ".ior", "must be a refraction index between 0.01 and 100 (got " +
                                              num(m.ior) + ")");
+        if (!(m.gloss >= 0 && m.gloss <= 1e6))
+            throw InputError(
+                f + ".gloss",
+                "must be a Phong exponent between 0 (a mirror) and 1e6 (got " + num(m.gloss) + ")");
+        if (m.gloss_samples < 1 || m.gloss_samples > kMaxGlossSamples)
+            throw InputError(f + ".gloss_samples", "must be between 1 and " +
+                                                       std::to_string(kMaxGlossSamples) + " (got " +
+                                                       std::to_string(m.gloss_samples) + ")");
     }
 
     if (s.lights.size() > kMaxLights)
@@ -141,6 +199,21 @@ void validate(const Scene& s) {
                 throw InputError(f + ".attenuation",
                                  "must not be all zero: 1/(c1 + c2 r + c3 r²) would be infinite");
         }
+        if (l.area == Light::Area::None) continue;
+        if (l.samples < 1 || l.samples > kMaxLightSamples)
+            throw InputError(f + ".samples", "must be between 1 and " +
+                                                 std::to_string(kMaxLightSamples) + " (got " +
+                                                 std::to_string(l.samples) + ")");
+        if (l.area == Light::Area::Rectangle) {
+            check_coordinates(l.edge_u, f + ".area.u");
+            check_coordinates(l.edge_v, f + ".area.v");
+        } else {
+            if (!(l.radius >= 0 && l.radius <= kMaxCoordinate))
+                throw InputError(f + ".area.radius",
+                                 "must be between 0 and 1e12 (got " + num(l.radius) + ")");
+            check_coordinates(l.normal, f + ".area.normal");
+            check_nonzero(l.normal, f + ".area.normal", "the disc's normal");
+        }
     }
 
     if (scene_tests(s) > static_cast<double>(kMaxObjects))
@@ -150,6 +223,17 @@ void validate(const Scene& s) {
                                         std::to_string(kMaxObjects));
     // What a run would cost, now that the counts are known to be sane.
     const double per_pixel = pixel_work(s);
+    if (per_pixel > kMaxPixelWork && distributed(s))
+        throw InputError(
+            tree_rays(s) > 64                  ? "settings.max_depth"
+            : s.settings.samples_per_pixel > 1 ? "settings.samples_per_pixel"
+                                               : "objects",
+            "makes one pixel cost up to " + num(per_pixel, 3) + " ray-object tests (" +
+                std::to_string(s.settings.samples_per_pixel) + " samples × " + num(tree_rays(s)) +
+                " rays per tree × " + num(1 + shadow_rays(s)) + " for the shadow rays × " +
+                num(scene_tests(s)) +
+                " objects); the limit is 1e7: use fewer samples, a lower max_depth, or fewer "
+                "objects or lights");
     if (per_pixel > kMaxPixelWork)
         throw InputError(
             tree_rays(s) > 64 ? "settings.max_depth" : "objects",
@@ -167,6 +251,7 @@ void validate(const Scene& s) {
     for (const Object& o : s.objects) {
         if (o.material < 0 || o.material >= static_cast<int>(s.materials.size()))
             throw InputError(o.field + ".material", "names no material");
+        if (o.velocity != dvec3(0.0)) check_coordinates(o.velocity, o.field + ".velocity");
         switch (o.kind) {
             case ObjectKind::Quadric:
                 validate_quadric(o.quadric, o.field);
@@ -222,12 +307,17 @@ dvec3 screen_point(const View& v, double x, double y) {
 Prepared prepare(const Scene& s) {
     Prepared p;
     p.view = make_view(s.camera);
+    p.focal_distance = s.camera.focal_distance > 0 ? s.camera.focal_distance
+                                                   : glm::length(s.camera.center - s.camera.eye);
+    p.distributed = distributed(s);
     double scale = std::max({1.0, glm::length(s.camera.eye), glm::length(s.camera.center)});
     p.objects.reserve(s.objects.size());
     for (const Object& o : s.objects) {
         PreparedObject q;
         q.kind = o.kind;
         q.material = o.material;
+        q.velocity = o.velocity;
+        q.moving = o.velocity != dvec3(0.0);
         switch (o.kind) {
             case ObjectKind::Quadric:
                 q.quadric = cg::prepare(o.quadric);
@@ -299,27 +389,54 @@ dvec3 object_normal(const PreparedObject& o, dvec3 point, dvec3 origin, dvec3 d,
     return o.normal;
 }
 
-Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max) {
+namespace {
+// Where a moving object is at `time`: the ray is moved the other way instead.
+dvec3 offset_at(const PreparedObject& o, double time) {
+    return o.moving ? o.velocity * time : dvec3(0.0);
+}
+}  // namespace
+
+Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
     Hit h;
     double best = t_max;
     for (std::size_t k = 0; k < p.objects.size(); ++k) {
-        const double t = intersect_object(p.objects[k], origin, d, t_min);
+        const PreparedObject& o = p.objects[k];
+        const double t = o.moving ? intersect_object(o, origin - o.velocity * time, d, t_min)
+                                  : intersect_object(o, origin, d, t_min);
         if (t < best) best = t, h.object = static_cast<int>(k);
     }
     if (h.object < 0) return h;
     h.t = best;
     h.point = origin + best * d;
-    dvec3 n = object_normal(p.objects[h.object], h.point, origin, d, t_min);
+    const dvec3 shift = offset_at(p.objects[h.object], time);
+    dvec3 n = p.objects[h.object].moving
+                  ? object_normal(p.objects[h.object], h.point - shift, origin - shift, d, t_min)
+                  : object_normal(p.objects[h.object], h.point, origin, d, t_min);
     if (n == dvec3(0.0)) n = -unit(d);  // a cone's apex: no gradient; face the ray
     h.entering = glm::dot(n, d) <= 0;   // a grazing ray counts as arriving from outside
     h.normal = h.entering ? n : -n;
     return h;
 }
 
-int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max) {
-    for (std::size_t k = 0; k < p.objects.size(); ++k)
-        if (intersect_object(p.objects[k], origin, d, t_min) < t_max) return static_cast<int>(k);
+int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,
+                  double time) {
+    for (std::size_t k = 0; k < p.objects.size(); ++k) {
+        const PreparedObject& o = p.objects[k];
+        const double t = o.moving ? intersect_object(o, origin - o.velocity * time, d, t_min)
+                                  : intersect_object(o, origin, d, t_min);
+        if (t < t_max) return static_cast<int>(k);
+    }
     return -1;
+}
+
+Surface moving_surface_at(const Scene& s, const Prepared& p, const Hit& h, dvec3 origin, dvec3 d,
+                          const RayDifferential* diff, double time, SurfaceDetail* detail) {
+    const PreparedObject& o = p.objects[h.object];
+    if (!o.moving) return surface_at(s, p, h, origin, d, diff, detail);
+    Hit at_rest = h;  // the hit where the object sits at time 0, for its textures
+    const dvec3 shift = o.velocity * time;
+    at_rest.point -= shift;
+    return surface_at(s, p, at_rest, origin - shift, d, diff, detail);
 }
 
 // ---- [shading] ------------------------------------------------------------------------------
@@ -393,23 +510,123 @@ SecondaryRay transmitted_ray(const Prepared& p, const Hit& h, dvec3 d, double io
     return {offset_point(p, h.point, -h.normal), t, true, false};
 }
 
+// ---- [distribution] -------------------------------------------------------------------------
+
+Rng pixel_rng(const Scene& s, int i, int j) {
+    return Rng(sampling::mix_seed(s.settings.seed, std::uint64_t(std::uint32_t(i)),
+                                  std::uint64_t(std::uint32_t(j))));
+}
+
+std::vector<PixelSample> pixel_samples(const Scene& s, int i, int j, Rng& rng) {
+    (void)i, (void)j;
+    const int n = s.settings.samples_per_pixel;
+    std::vector<PixelSample> out(static_cast<std::size_t>(n));
+    if (n > 1) {
+        const std::uint64_t seed = rng.next();
+        const auto pts =
+            sampling::generate(s.settings.pattern, n, seed, sampling::default_radius(n));
+        out.resize(pts.size());  // Poisson dart throwing always reaches its default radius
+        for (std::size_t k = 0; k < pts.size(); ++k) {
+            out[k].pixel = pts[k].p;
+            out[k].weight = sampling::weight(s.settings.filter, pts[k].p - glm::dvec2(0.5));
+        }
+    }
+    for (PixelSample& ps : out) {
+        if (s.camera.aperture > 0) {  // a uniform point of the unit disc
+            const double r = std::sqrt(rng.uniform(0, 1));
+            const double a = 2 * M_PI * rng.uniform(0, 1);
+            ps.lens = {r * std::cos(a), r * std::sin(a)};
+        }
+        if (s.camera.shutter > 0) ps.time = s.camera.shutter * rng.uniform(0, 1);
+    }
+    return out;
+}
+
+void primary_ray(const Prepared& p, const Camera& c, int i, int j, const PixelSample& ps,
+                 dvec3& origin, dvec3& direction) {
+    const dvec3 P = screen_point(p.view, i + ps.pixel.x, j + ps.pixel.y);
+    origin = p.view.eye;
+    direction = P - p.view.eye;
+    if (c.aperture <= 0) return;
+    // The thin lens: every ray through this screen point meets at the focal plane, where the
+    // pinhole ray E + t (P − E) is at t = focal distance (the screen is at distance 1).
+    const dvec3 F = p.view.eye + p.focal_distance * direction;
+    origin = p.view.eye + c.aperture * (ps.lens.x * p.view.u + ps.lens.y * p.view.v);
+    direction = (F - origin) / p.focal_distance;
+}
+
+std::vector<dvec3> light_points(const Light& light, Rng& rng) {
+    const int n = light.samples;
+    const auto pattern =
+        sampling::grid_side(n) > 0 ? sampling::Pattern::Jittered : sampling::Pattern::Random;
+    const auto pts = sampling::generate(pattern, n, rng.next());
+    std::vector<dvec3> out;
+    out.reserve(pts.size());
+    if (light.area == Light::Area::Rectangle) {
+        for (const auto& q : pts)
+            out.push_back(light.position + (q.p.x - 0.5) * light.edge_u +
+                          (q.p.y - 0.5) * light.edge_v);
+    } else {  // a disc: radius √x (uniform in area), angle 2π y
+        const dvec3 n3 = unit(light.normal);
+        const dvec3 e1 = unit(std::fabs(n3.x) < 0.9 ? glm::cross(n3, dvec3(1, 0, 0))
+                                                    : glm::cross(n3, dvec3(0, 1, 0)));
+        const dvec3 e2 = glm::cross(n3, e1);
+        for (const auto& q : pts) {
+            const double r = light.radius * std::sqrt(q.p.x), a = 2 * M_PI * q.p.y;
+            out.push_back(light.position + r * std::cos(a) * e1 + r * std::sin(a) * e2);
+        }
+    }
+    return out;
+}
+
+dvec3 glossy_direction(dvec3 r, double gloss, Rng& rng) {
+    const double x1 = rng.uniform(0, 1);
+    const double x2 = rng.uniform(0, 1);
+    const double cos_t = std::pow(x1, 1 / (gloss + 1));
+    const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
+    const double a = 2 * M_PI * x2;
+    const dvec3 t1 =
+        unit(std::fabs(r.x) < 0.9 ? glm::cross(dvec3(1, 0, 0), r) : glm::cross(dvec3(0, 1, 0), r));
+    const dvec3 t2 = glm::cross(r, t1);
+    return sin_t * std::cos(a) * t1 + sin_t * std::sin(a) * t2 + cos_t * r;
+}
+
 // ---- [the plain tracer] ---------------------------------------------------------------------
 
-Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
-            RayCounts& counts, const RayDifferential* diff) {
-    const Hit h = nearest_hit(p, origin, d);
+Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth, RayCounts& counts,
+            const RayDifferential* diff, Rng* rng, double time) {
+    const Hit h = nearest_hit(p, origin, d, kRayEpsilon, Quadric::kInf, time);
     if (h.object < 0) return s.background;
     const Material& m = s.materials[p.objects[h.object].material];
     const dvec3 v = -unit(d);
-    const Surface sf = surface_at(s, p, h, origin, d, diff);  // textured k_a, k_d and normal
+    // Textured k_a, k_d and normal.
+    const Surface sf = moving_surface_at(s, p, h, origin, d, diff, time, nullptr);
     Color c = sf.ka * s.ambient;
     for (const Light& light : s.lights) {
+        if (light.area != Light::Area::None && rng) {  // rays over the light's area
+            const std::vector<dvec3> points = light_points(light, *rng);
+            const double share = 1.0 / double(points.size());
+            Light at = light;
+            for (const dvec3& q : points) {
+                at.position = q;
+                const LightTerm lt = light_term(s, at, sf.kd, m, h.point, sf.normal, v);
+                if (!lt.facing) continue;
+                if (s.settings.shadows) {
+                    ++counts.shadow;
+                    if (first_blocker(p, offset_point(p, h.point, h.normal), lt.l, kRayEpsilon,
+                                      lt.distance, time) >= 0)
+                        continue;
+                }
+                c += (lt.diffuse + lt.specular) * share;
+            }
+            continue;
+        }
         const LightTerm lt = light_term(s, light, sf.kd, m, h.point, sf.normal, v);
         if (!lt.facing) continue;  // a light behind the surface needs no shadow ray
         if (s.settings.shadows) {
             ++counts.shadow;
-            if (first_blocker(p, offset_point(p, h.point, h.normal), lt.l, kRayEpsilon,
-                              lt.distance) >= 0)
+            if (first_blocker(p, offset_point(p, h.point, h.normal), lt.l, kRayEpsilon, lt.distance,
+                              time) >= 0)
                 continue;
         }
         c += lt.diffuse + lt.specular;
@@ -418,23 +635,48 @@ Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
     const dvec3 dn = unit(d);
     if (s.settings.reflections && any_positive(m.kr)) {
         const SecondaryRay r = mirror_ray(p, h, dn);
-        ++counts.reflected;
-        c += m.kr * trace(s, p, r.origin, r.direction, depth + 1, counts);
+        if (m.gloss > 0 && rng) {  // rays over the Phong lobe about the mirror direction
+            const Color w = m.kr * (1.0 / double(m.gloss_samples));
+            for (int g = 0; g < m.gloss_samples; ++g) {
+                const dvec3 dir = glossy_direction(r.direction, m.gloss, *rng);
+                if (!(glm::dot(dir, h.normal) > 0)) continue;  // below the surface: nothing
+                ++counts.reflected;
+                c += w * trace(s, p, r.origin, dir, depth + 1, counts, nullptr, rng, time);
+            }
+        } else {
+            ++counts.reflected;
+            c += m.kr * trace(s, p, r.origin, r.direction, depth + 1, counts, nullptr, rng, time);
+        }
     }
     if (s.settings.refractions && any_positive(m.kt)) {
         // At total internal reflection the transmitted share is reflected.
         const SecondaryRay t = transmitted_ray(p, h, dn, m.ior);
         ++(t.refracted ? counts.refracted : counts.reflected);
-        c += m.kt * trace(s, p, t.origin, t.direction, depth + 1, counts);
+        c += m.kt * trace(s, p, t.origin, t.direction, depth + 1, counts, nullptr, rng, time);
     }
     return c;
 }
 
 Color pixel_color(const Scene& s, const Prepared& p, int i, int j, RayCounts& counts) {
-    ++counts.primary;
-    const dvec3 P = screen_point(p.view, i + 0.5, j + 0.5);
     const RayDifferential diff = pixel_differential(p.view, i, j);
-    return trace(s, p, p.view.eye, P - p.view.eye, 0, counts, &diff);
+    if (!p.distributed) {
+        ++counts.primary;
+        const dvec3 P = screen_point(p.view, i + 0.5, j + 0.5);
+        return trace(s, p, p.view.eye, P - p.view.eye, 0, counts, &diff);
+    }
+    // Distribution ray tracing: the filtered average of the pixel's samples.
+    Rng rng = pixel_rng(s, i, j);
+    const std::vector<PixelSample> samples = pixel_samples(s, i, j, rng);
+    Color sum(0.0);
+    double weights = 0;
+    for (const PixelSample& ps : samples) {
+        ++counts.primary;
+        dvec3 origin, direction;
+        primary_ray(p, s.camera, i, j, ps, origin, direction);
+        sum += ps.weight * trace(s, p, origin, direction, 0, counts, &diff, &rng, ps.time);
+        weights += ps.weight;
+    }
+    return sum / weights;
 }
 
 std::uint32_t to_rgba8(Color c) {

@@ -32,6 +32,22 @@
 // travel into), so they do not hit the surface they leave. Shadow rays treat every object as
 // opaque (a glass ball casts a full shadow), as the course's tracer does. A point light's
 // attenuation 1/(c1 + c2 r + c3 r²) is capped at 10⁶, so a light touching a surface stays finite.
+//
+// Distribution ray tracing (Cook's): a pixel's colour is the filtered average of
+// settings.samples_per_pixel primary rays, placed in the pixel by a sample pattern
+// (sampling/patterns.hpp; one sample is the pixel's centre, whatever the pattern), each through a
+// point of the lens (camera.aperture: a thin lens of that radius focused at
+// camera.focal_distance — rays from a lens point aim at where the pinhole ray through the same
+// screen point meets the focal plane) and at a time in the shutter interval [0, camera.shutter]
+// (objects with a velocity are moved by velocity × time for that ray and all the rays it casts).
+// An area light (a rectangle or a disc) is sampled by light.samples shadow rays, each to its own
+// point of the area, each adding 1/samples of that point's diffuse and specular terms; a glossy
+// material (gloss > 0) reflects gloss_samples rays about the mirror direction with the Phong
+// lobe's density ∝ cos^gloss of their angle to it, each weighted k_r / gloss_samples (a ray drawn
+// below the surface adds nothing). Every random number comes from one generator per pixel,
+// seeded by mix_seed(settings.seed, i, j), in the order the plain tracer uses them, so an image
+// does not depend on the number of threads, and with one sample, no aperture, no shutter time, no
+// light area and no gloss the tracer is exactly the one above.
 #pragma once
 
 #include <cstdint>
@@ -39,10 +55,12 @@
 #include <string>
 #include <vector>
 
+#include "core/rng.hpp"
 #include "core/shared.hpp"
 #include "rays/csg.hpp"
 #include "rays/quadric.hpp"
 #include "rays/rt_texture.hpp"
+#include "sampling/patterns.hpp"
 
 namespace cg::rt {
 
@@ -55,6 +73,8 @@ struct Material {
     Color kr{0.0};                    // share of the mirror ray's colour, ≥ 0
     Color kt{0.0};                    // share of the refracted ray's colour, ≥ 0
     double ior = 1.0;                 // refraction index inside the object, > 0
+    double gloss = 0;                 // glossy reflection: the Phong lobe's exponent (0: a mirror)
+    int gloss_samples = 1;            // ... and the reflected rays it casts
     MaterialTextures tex;             // texture, solid texture, bump (rays/rt_texture.hpp)
     bool operator==(const Material&) const = default;
 };
@@ -65,6 +85,14 @@ struct Light {
     glm::dvec3 direction{0.0};        // a directional light's direction of travel
     Color intensity{1.0};             // I_i, ≥ 0
     glm::dvec3 attenuation{1, 0, 0};  // c1, c2, c3 (point lights)
+    // An area light (point lights only): a rectangle position + a·edge_u + b·edge_v,
+    // a, b ∈ [−½, ½], or a disc of `radius` about `position` across `normal`; sampled by
+    // `samples` shadow rays (jittered when a square number, else uniform).
+    enum class Area : std::uint8_t { None, Rectangle, Disc } area = Area::None;
+    glm::dvec3 edge_u{0.0}, edge_v{0.0};
+    double radius = 0;
+    glm::dvec3 normal{0, 1, 0};
+    int samples = 1;
     bool operator==(const Light&) const = default;
 };
 
@@ -80,6 +108,7 @@ struct Object {
     glm::dvec3 normal{0, 0, 1};            // Plane: as given (any length > 0)
     CsgTree csg;                           // Csg: the tree (rays/rt_csg.hpp)
     ObjectUv uv;                           // its texture parametrisation (rays/rt_texture.hpp)
+    glm::dvec3 velocity{0.0};              // motion blur: moved by velocity × time
     bool operator==(const Object&) const = default;
 };
 
@@ -87,6 +116,9 @@ struct Camera {
     glm::dvec3 eye{0, 0, 5}, center{0, 0, 0}, up{0, 1, 0};
     double fov_y_deg = 45;        // vertical field of view, degrees, in (0, 180)
     int width = 64, height = 48;  // pixels
+    double aperture = 0;          // depth of field: the thin lens's radius (0: a pinhole)
+    double focal_distance = 0;    // ... the distance in focus along the view (0: |center − eye|)
+    double shutter = 0;           // motion blur: rays are spread over times [0, shutter]
     bool operator==(const Camera&) const = default;
 };
 
@@ -96,6 +128,10 @@ struct Settings {
     int max_depth = 3;  // reflection/refraction depth limit: 0 casts no secondary rays
     bool shadows = true, reflections = true, refractions = true;
     Model model = Model::Phong;
+    int samples_per_pixel = 1;  // primary rays per pixel (anti-aliasing)
+    sampling::Pattern pattern = sampling::Pattern::Jittered;  // where they go in the pixel
+    sampling::Filter filter = sampling::Filter::Box;          // how they are weighted
+    std::uint64_t seed = 1;                                   // every random choice comes from it
     bool operator==(const Settings&) const = default;
 };
 
@@ -117,15 +153,24 @@ constexpr std::size_t kMaxObjects = 20000;
 constexpr std::size_t kMaxLights = 64;
 constexpr double kMaxCoordinate = 1e12;  // |coordinates| and scene sizes stay below this
 constexpr double kMaxAttenuation = 1e6;  // 1/(c1 + c2 r + c3 r²) is capped here (a light at r = 0)
+constexpr int kMaxSamplesPerPixel = 1024;
+constexpr int kMaxLightSamples = 1024;
+constexpr int kMaxGlossSamples = 256;
+
+// Whether the scene uses any distribution: more than one sample per pixel, a lens, a shutter
+// time, an area light or a glossy material. Without any, every ray is traced as before.
+bool distributed(const Scene& s);
 
 // The cost of a scene in ray-object tests, worst case: every ray of a primary ray's tree (a
 // full binary tree of depth max_depth when some materials mirror and others refract — or one
 // does both —, a chain when only one kind does) meets every object and casts a shadow ray to
 // every light. The tracer has no acceleration structure, so these bound its running time. A CSG
 // object costs one test per leaf (object_tests).
-double tree_rays(const Scene& s);      // rays in one primary ray's tree, at most
+double tree_rays(const Scene& s);      // rays in one primary ray's tree, at most (glossy
+                                       // materials branch gloss_samples ways)
 double scene_tests(const Scene& s);    // ray-object tests per ray: objects, CSG leaves each
-double pixel_work(const Scene& s);     // tree_rays × (1 + lights) × scene_tests
+double pixel_work(const Scene& s);     // samples × tree_rays × (1 + shadow rays) × scene_tests
+                                       // (+ samples² for Poisson dart throwing)
 constexpr double kMaxPixelWork = 1e7;  // one pixel (one step): well under a second
 constexpr double kMaxWork = 2e10;      // the whole image: a few minutes at most
 
@@ -146,6 +191,8 @@ struct PreparedObject {
     glm::dvec3 p0{0.0}, e1{0.0}, e2{0.0};  // a triangle's p0, p1 − p0, p2 − p0
     glm::dvec3 normal{0.0};                // a plane's or triangle's unit normal
     Shared<PreparedCsg> csg;               // a CSG object's tree
+    glm::dvec3 velocity{0.0};              // motion blur (rays are moved by −velocity × time)
+    bool moving = false;                   // velocity ≠ 0
     bool operator==(const PreparedObject&) const = default;
 };
 
@@ -159,8 +206,10 @@ struct View {
 
 struct Prepared {
     View view;
+    double focal_distance = 1;  // the camera's, resolved (|center − eye| when not given)
     std::vector<PreparedObject> objects;
-    double epsilon = 1e-9;  // the offset of secondary rays, scaled to the scene's size
+    double epsilon = 1e-9;     // the offset of secondary rays, scaled to the scene's size
+    bool distributed = false;  // rt::distributed(scene)
     PreparedTextures textures;
     bool operator==(const Prepared&) const = default;
 };
@@ -181,13 +230,14 @@ struct Hit {
     bool operator==(const Hit&) const = default;
 };
 
-// The nearest hit with t > t_min (and t < t_max) over every object.
+// The nearest hit with t > t_min (and t < t_max) over every object, at `time` (moving objects
+// are where velocity × time puts them).
 Hit nearest_hit(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
-                double t_min = kRayEpsilon, double t_max = Quadric::kInf);
+                double t_min = kRayEpsilon, double t_max = Quadric::kInf, double time = 0);
 // Whether anything lies on the ray at t_min < t < t_max (a shadow ray's test): the first
 // object found, or -1.
 int first_blocker(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, double t_min,
-                  double t_max);
+                  double t_max, double time = 0);
 // The hit's t with one object (or +inf), and its normal there: the pieces of nearest_hit. A CSG
 // object's normal depends on which surface the ray met, not only on the point: object_normal
 // takes the ray too.
@@ -225,6 +275,12 @@ glm::dvec3 reflect(glm::dvec3 d, glm::dvec3 n);
 // total internal reflection (η² (1 − cos²θ₁) > 1).
 bool refract(glm::dvec3 d, glm::dvec3 n, double eta, glm::dvec3& out);
 
+// surface_at (rays/rt_texture.hpp) for a hit at `time`: a moving object's textures are looked up
+// where the hit is on the object at rest.
+Surface moving_surface_at(const Scene& s, const Prepared& p, const Hit& h, glm::dvec3 origin,
+                          glm::dvec3 d, const RayDifferential* diff, double time,
+                          SurfaceDetail* detail);
+
 // A hit's secondary rays, as both tracers cast them (unit d, the incoming direction):
 // the mirror ray from just above the surface; and the transmitted one — refracted from just
 // below it by η = 1/ior entering and ior leaving, or, at total internal reflection, the
@@ -236,6 +292,28 @@ struct SecondaryRay {
 };
 SecondaryRay mirror_ray(const Prepared& p, const Hit& h, glm::dvec3 d);
 SecondaryRay transmitted_ray(const Prepared& p, const Hit& h, glm::dvec3 d, double ior);
+
+// ---- distribution: the random choices, shared by the plain tracer and the state machine ----
+
+// One primary ray of a pixel: where it crosses the pixel (pixel units), the lens point (in the
+// lens's u, v frame, lens radii) and the time, and its filter weight.
+struct PixelSample {
+    glm::dvec2 pixel{0.5};  // offset in the pixel, [0, 1)²
+    glm::dvec2 lens{0.0};   // in the unit disc
+    double time = 0;
+    double weight = 1;
+    bool operator==(const PixelSample&) const = default;
+};
+// The pixel's generator, and its samples (drawing the lens points and times from it).
+Rng pixel_rng(const Scene& s, int i, int j);
+std::vector<PixelSample> pixel_samples(const Scene& s, int i, int j, Rng& rng);
+// The primary ray of a sample: origin (the eye, or a point of the lens) and direction.
+void primary_ray(const Prepared& p, const Camera& c, int i, int j, const PixelSample& ps,
+                 glm::dvec3& origin, glm::dvec3& direction);
+// The points an area light is sampled at for one hit (drawn from rng; `light.samples` of them).
+std::vector<glm::dvec3> light_points(const Light& light, Rng& rng);
+// A glossy ray's direction about the unit mirror direction r: cos θ = ξ₁^(1/(gloss+1)).
+glm::dvec3 glossy_direction(glm::dvec3 r, double gloss, Rng& rng);
 
 // Whether any channel is positive: a material mirrors when any_positive(kr), refracts when
 // any_positive(kt).
@@ -258,9 +336,11 @@ struct RayCounts {
 // ---- the plain tracer ---------------------------------------------------------------------
 
 // The colour a ray returns; `depth` is how many reflections/refractions led to it; `diff` is a
-// primary ray's differential, for mipmapped textures (rays/rt_texture.hpp).
+// primary ray's differential, for mipmapped textures (rays/rt_texture.hpp); `rng` the pixel's
+// generator (needed when the scene has area lights or glossy materials), `time` the ray's.
 Color trace(const Scene& s, const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, int depth,
-            RayCounts& counts, const RayDifferential* diff = nullptr);
+            RayCounts& counts, const RayDifferential* diff = nullptr, Rng* rng = nullptr,
+            double time = 0);
 Color pixel_color(const Scene& s, const Prepared& p, int i, int j, RayCounts& counts);
 std::uint32_t to_rgba8(Color c);  // 0xRRGGBBAA, alpha 255
 

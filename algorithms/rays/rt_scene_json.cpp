@@ -5,6 +5,7 @@
 #include "rays/csg_json.hpp"
 #include "rays/rays_json.hpp"
 #include "rays/texture_json.hpp"
+#include "sampling/pattern_json.hpp"
 
 namespace cg::rt {
 
@@ -34,7 +35,7 @@ bool optional_bool(const Reader& r, const char* key, bool fallback) {
 }
 
 Camera camera_from(const Reader& r) {
-    r.only({"eye", "center", "up", "fov_y_deg", "size"});
+    r.only({"eye", "center", "up", "fov_y_deg", "size", "aperture", "focal_distance", "shutter"});
     Camera c;
     c.eye = r.point3("eye");
     c.center = r.point3("center");
@@ -55,11 +56,24 @@ Camera camera_from(const Reader& r) {
                                     std::to_string(w) + "×" + std::to_string(h) + ")");
         c.width = static_cast<int>(w), c.height = static_cast<int>(h);
     }
+    if (r.has("aperture")) c.aperture = r.number("aperture");
+    if (r.has("focal_distance")) c.focal_distance = r.number("focal_distance");
+    if (r.has("shutter")) c.shutter = r.number("shutter");
     return c;
 }
 
+// A count in [1, max], naming the field.
+int count_from(const Reader& r, const char* key, int max) {
+    const long long n = r.integer(key);
+    if (n < 1 || n > max)
+        throw InputError(r.field(key), "must be between 1 and " + std::to_string(max) + " (got " +
+                                           std::to_string(n) + ")");
+    return static_cast<int>(n);
+}
+
 Settings settings_from(const Reader& r) {
-    r.only({"max_depth", "shadows", "reflections", "refractions", "model", "ray_casting"});
+    r.only({"max_depth", "shadows", "reflections", "refractions", "model", "ray_casting",
+            "samples_per_pixel", "pattern", "filter", "seed"});
     Settings s;
     if (r.has("max_depth")) {
         const long long d = r.integer("max_depth");
@@ -90,6 +104,11 @@ Settings settings_from(const Reader& r) {
         s.max_depth = 0;
         s.shadows = false;
     }
+    if (r.has("samples_per_pixel"))
+        s.samples_per_pixel = count_from(r, "samples_per_pixel", kMaxSamplesPerPixel);
+    if (r.has("pattern")) s.pattern = sampling_json::pattern(r, "pattern");
+    if (r.has("filter")) s.filter = sampling_json::filter(r, "filter");
+    if (r.has("seed")) s.seed = sampling_json::seed(r, "seed");
     return s;
 }
 
@@ -128,7 +147,7 @@ void object_uv_from(const Reader& o, Object& obj) {
 
 Material material_from(const Reader& r) {
     r.only({"name", "ka", "kd", "ks", "shininess", "kr", "kt", "ior", "texture", "solid_texture",
-            "bump"});
+            "bump", "gloss", "gloss_samples"});
     Material m;
     m.name = r.string("name");
     m.ka = optional_color(r, "ka", m.ka);
@@ -138,12 +157,19 @@ Material material_from(const Reader& r) {
     m.kr = optional_color(r, "kr", m.kr);
     m.kt = optional_color(r, "kt", m.kt);
     if (r.has("ior")) m.ior = r.number("ior");
+    if (r.has("gloss")) m.gloss = r.number("gloss");
+    if (r.has("gloss_samples")) {
+        m.gloss_samples = count_from(r, "gloss_samples", kMaxGlossSamples);
+        if (!(m.gloss > 0))
+            throw InputError(r.field("gloss_samples"),
+                             "needs \"gloss\" > 0: a mirror (gloss 0) reflects one ray");
+    }
     material_textures_from(r, m.tex);
     return m;
 }
 
 Light light_from(const Reader& l) {
-    l.only({"position", "direction", "intensity", "attenuation"});
+    l.only({"position", "direction", "intensity", "attenuation", "area", "samples"});
     if (l.has("position") == l.has("direction"))
         throw InputError(l.path(),
                          "needs exactly one of \"position\" (a point light) and "
@@ -160,6 +186,33 @@ Light light_from(const Reader& l) {
             throw InputError(l.field("attenuation"),
                              "applies to point lights only: a directional light is not attenuated");
         light.attenuation = l.point3("attenuation");
+    }
+    if (l.has("area")) {
+        if (light.directional)
+            throw InputError(l.field("area"),
+                             "applies to point lights only: a directional light has no position");
+        const Reader a = l.object("area");
+        const std::string shape = a.string("shape");
+        if (shape == "rectangle") {
+            a.only({"shape", "u", "v"});
+            light.area = Light::Area::Rectangle;
+            light.edge_u = a.point3("u");
+            light.edge_v = a.point3("v");
+        } else if (shape == "disc") {
+            a.only({"shape", "radius", "normal"});
+            light.area = Light::Area::Disc;
+            light.radius = a.number("radius");
+            if (a.has("normal")) light.normal = a.point3("normal");
+        } else {
+            throw InputError(a.field("shape"),
+                             "must be \"rectangle\" or \"disc\" (got \"" + shape + "\")");
+        }
+    }
+    if (l.has("samples")) {
+        if (light.area == Light::Area::None)
+            throw InputError(l.field("samples"),
+                             "is for an area light (\"area\"): a point light needs one shadow ray");
+        light.samples = count_from(l, "samples", kMaxLightSamples);
     }
     return light;
 }
@@ -186,15 +239,17 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
             throw InputError(o.field("material"),
                              "is missing: every object needs a material's name");
         obj.material = material_index(o, materials);
+        if (o.has("velocity")) obj.velocity = o.point3("velocity");
         if (type == "plane") {
-            o.only({"type", "name", "material", "point", "normal", "u_axis", "uv_scale"});
+            o.only(
+                {"type", "name", "material", "point", "normal", "u_axis", "uv_scale", "velocity"});
             object_uv_from(o, obj);
             obj.kind = ObjectKind::Plane;
             obj.p0 = o.point3("point");
             obj.normal = o.point3("normal");
             s.objects.push_back(obj);
         } else if (type == "triangle") {
-            o.only({"type", "name", "material", "vertices", "uv"});
+            o.only({"type", "name", "material", "vertices", "uv", "velocity"});
             object_uv_from(o, obj);
             obj.kind = ObjectKind::Triangle;
             const std::vector<glm::dvec3> p = o.points3("vertices");
@@ -205,7 +260,7 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
             obj.field = o.field("vertices");
             s.objects.push_back(obj);
         } else if (type == "mesh") {
-            o.only({"type", "name", "material", "vertices", "triangles", "uv"});
+            o.only({"type", "name", "material", "vertices", "triangles", "uv", "velocity"});
             const std::vector<glm::dvec3> p = o.points3("vertices");
             std::vector<glm::dvec2> uv;  // per vertex (optional)
             if (o.has("uv")) {
@@ -247,12 +302,12 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
                 s.objects.push_back(tri);
             }
         } else if (type == "csg") {
-            o.only({"type", "name", "material", "tree"});
+            o.only({"type", "name", "material", "tree", "velocity"});
             obj.kind = ObjectKind::Csg;
             obj.csg = csg_json::tree(o.get("tree"), o.field("tree"));
             s.objects.push_back(obj);
         } else {
-            o.only({"type", "name", "material", "params", "transform", "zmin", "zmax"});
+            o.only({"type", "name", "material", "params", "transform", "zmin", "zmax", "velocity"});
             const bool quadric = type == "sphere" || type == "ellipsoid" || type == "paraboloid" ||
                                  type == "hyperboloid" || type == "cone" || type == "cylinder";
             if (!quadric)
@@ -336,11 +391,22 @@ json scene_to_json(const Scene& s) {
                 {"up", nice_point(s.camera.up)},
                 {"fov_y_deg", nice_number(s.camera.fov_y_deg)},
                 {"size", {s.camera.width, s.camera.height}}};
+    if (s.camera.aperture > 0) camera["aperture"] = nice_number(s.camera.aperture);
+    if (s.camera.focal_distance > 0)
+        camera["focal_distance"] = nice_number(s.camera.focal_distance);
+    if (s.camera.shutter > 0) camera["shutter"] = nice_number(s.camera.shutter);
     json settings{{"max_depth", s.settings.max_depth},
                   {"shadows", s.settings.shadows},
                   {"reflections", s.settings.reflections},
                   {"refractions", s.settings.refractions},
                   {"model", s.settings.model == Model::Phong ? "phong" : "blinn-phong"}};
+    if (s.settings.samples_per_pixel != 1 || s.settings.pattern != Settings{}.pattern ||
+        s.settings.filter != Settings{}.filter || s.settings.seed != Settings{}.seed) {
+        settings["samples_per_pixel"] = s.settings.samples_per_pixel;
+        settings["pattern"] = sampling::pattern_id(s.settings.pattern);
+        settings["filter"] = sampling::filter_id(s.settings.filter);
+        settings["seed"] = s.settings.seed;
+    }
     json materials = json::array();
     for (const Material& m : s.materials) {
         json mj{{"name", m.name},
@@ -351,6 +417,8 @@ json scene_to_json(const Scene& s) {
                 {"kr", colour(m.kr)},
                 {"kt", colour(m.kt)},
                 {"ior", nice_number(m.ior)}};
+        if (m.gloss > 0) mj["gloss"] = nice_number(m.gloss);
+        if (m.gloss_samples != 1) mj["gloss_samples"] = m.gloss_samples;
         if (m.tex.has_texture) mj["texture"] = texture_json::texture_json(m.tex.texture);
         if (m.tex.has_solid) mj["solid_texture"] = texture_json::solid_json(m.tex.solid);
         if (m.tex.has_bump) mj["bump"] = texture_json::height_json(m.tex.bump);
@@ -366,6 +434,14 @@ json scene_to_json(const Scene& s) {
         j["intensity"] = colour(l.intensity);
         if (!l.directional && l.attenuation != glm::dvec3(1, 0, 0))
             j["attenuation"] = nice_point(l.attenuation);
+        if (l.area == Light::Area::Rectangle)
+            j["area"] = json{
+                {"shape", "rectangle"}, {"u", nice_point(l.edge_u)}, {"v", nice_point(l.edge_v)}};
+        else if (l.area == Light::Area::Disc)
+            j["area"] = json{{"shape", "disc"},
+                             {"radius", nice_number(l.radius)},
+                             {"normal", nice_point(l.normal)}};
+        if (l.area != Light::Area::None) j["samples"] = l.samples;
         lights.push_back(std::move(j));
     }
     json objects = json::array();
@@ -395,6 +471,7 @@ json scene_to_json(const Scene& s) {
         }
         j["name"] = o.name;
         j["material"] = s.materials[o.material].name;
+        if (o.velocity != glm::dvec3(0.0)) j["velocity"] = nice_point(o.velocity);
         objects.push_back(std::move(j));
     }
     return json{{"camera", std::move(camera)},        {"settings", std::move(settings)},

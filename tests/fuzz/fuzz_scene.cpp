@@ -1,7 +1,7 @@
 // Scene files, through `cgsandbox render-scene`'s path: parse, read the scene (validation),
 // then render it with the plain tracer on one thread and check every pixel was written and
-// the ray counts add up. Only InputError may escape; scenes too costly for a fuzz iteration
-// (fuzz_support.hpp) are validated but not rendered.
+// the ray counts add up (samples_per_pixel primary rays per pixel). Only InputError may escape;
+// scenes too costly for a fuzz iteration (fuzz_support.hpp) are validated but not rendered.
 #include "fuzz_support.hpp"
 #include "rays/rt_scene.hpp"
 
@@ -23,7 +23,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         cg::fuzz::fail("the image has the wrong size");
     for (std::uint32_t v : img.rgba)
         if ((v & 0xff) != 0xff) cg::fuzz::fail("a pixel was not written");
-    if (img.rays.primary != img.rgba.size()) cg::fuzz::fail("one primary ray per pixel");
+    // One primary ray per pixel sample (Poisson dart throwing may place fewer).
+    const std::uint64_t spp = static_cast<std::uint64_t>(scene.settings.samples_per_pixel);
+    if (img.rays.primary < img.rgba.size() || img.rays.primary > img.rgba.size() * spp ||
+        (scene.settings.pattern != cg::sampling::Pattern::Poisson &&
+         img.rays.primary != img.rgba.size() * spp))
+        cg::fuzz::fail("one primary ray per pixel sample");
     // The scene written back reads the same.
     const cg::json written = cg::rt::scene_to_json(scene);
     const cg::rt::Scene again = cg::rt::scene_from_json(written);

@@ -554,7 +554,10 @@ Png load_png(const std::string& path) {
 
 TEST_CASE("ray-tracer: render-scene matches the golden images", "[rays][ray-tracer][golden]") {
     const std::string dir = std::string(CG_SOURCE_DIR) + "/tests/golden/ray-tracer/";
-    for (const char* name : {"reference", "no-shadows", "ray-casting", "glass", "mesh"}) {
+    for (const char* name :
+         {"reference", "no-shadows", "ray-casting", "glass", "mesh",
+          // distribution ray tracing (test_rt_distribution.cpp)
+          "aa-edge-1", "aa-edge-16", "soft-shadows", "depth-of-field", "motion-blur"}) {
         CAPTURE(name);
         const std::string out = cg::test::output_path(std::string("golden-") + name + ".png");
         auto r = cg::test::cgsandbox({"render-scene", dir + name + ".json", "--out", out});

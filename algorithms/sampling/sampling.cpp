@@ -1,0 +1,821 @@
+// Sections: [helpers] [plain functions] [spec] [validate] [advance] [narrate] [result] [draw]
+#include "sampling/sampling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/format.hpp"
+#include "sampling/coverage.hpp"
+
+namespace cg {
+
+namespace {
+
+using glm::dvec2;
+using Phase = Sampling::Phase;
+using Mode = Sampling::Mode;
+
+// ---- [helpers] ------------------------------------------------------------------------------
+
+enum Line {
+    kLineSample = 1,
+    kLineFold,
+    kLineReconstruct,
+    kLineRow,
+    kLineCompare,
+};
+
+constexpr double kPi = 3.14159265358979323846;
+
+double rad(double deg) {
+    return deg * kPi / 180;
+}
+
+// An angle in degrees reduced to (−180, 180].
+double wrap_deg(double a) {
+    a = std::fmod(a, 360.0);
+    if (a > 180) a -= 360;
+    if (a <= -180) a += 360;
+    return a;
+}
+
+double sinc(double u) {
+    if (u == 0) return 1;
+    const double x = kPi * u;
+    return std::sin(x) / x;
+}
+
+const char* image_id(Sampling::ImageKind k) {
+    switch (k) {
+        case Sampling::ImageKind::Edge:
+            return "edge";
+        case Sampling::ImageKind::Checkerboard:
+            return "checkerboard";
+        case Sampling::ImageKind::ZonePlate:
+            return "zone-plate";
+    }
+    return "edge";
+}
+
+void check_finite(double v, const std::string& field) {
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+}
+
+}  // namespace
+
+// ---- [plain functions] ----------------------------------------------------------------------
+
+double Sampling::signal(const std::vector<Component>& c, double t) {
+    double s = 0;
+    for (const Component& k : c)
+        s += k.amplitude * std::sin(2 * kPi * k.frequency * t + rad(k.phase));
+    return s;
+}
+
+Sampling::Alias Sampling::fold(double f, double phase_deg, double rate) {
+    Alias a;
+    a.frequency = f;
+    a.k = static_cast<long long>(std::floor(f / rate + 0.5));
+    const double d = f - double(a.k) * rate;  // in [−f_s/2, f_s/2]
+    a.alias = std::fabs(d);
+    a.alias_phase = d < 0 ? wrap_deg(180 - phase_deg) : wrap_deg(phase_deg);
+    a.aliased = rate <= 2 * f;
+    return a;
+}
+
+long long Sampling::sample_count(double rate, double duration) {
+    // n / f_s ≤ duration, with a little slack for rounding (duration 1, f_s 10: 11 samples).
+    return static_cast<long long>(std::floor(duration * rate * (1 + 1e-12) + 1e-9)) + 1;
+}
+
+double Sampling::reconstruct(const Input& in, double t) {
+    const double u = t * in.rate;
+    auto x = [&](long long n) { return signal(in.signal, double(n) / in.rate); };
+    switch (in.reconstruction) {
+        case Reconstruction::Nearest:
+            return x(static_cast<long long>(std::floor(u + 0.5)));
+        case Reconstruction::Linear: {
+            const double n0 = std::floor(u);
+            const double a = u - n0;
+            const long long n = static_cast<long long>(n0);
+            return a == 0 ? x(n) : (1 - a) * x(n) + a * x(n + 1);
+        }
+        case Reconstruction::Sinc: {
+            const long long n0 = static_cast<long long>(std::floor(u));
+            double sum = 0;
+            for (long long n = n0 - kLanczos + 1; n <= n0 + kLanczos; ++n) {
+                const double d = u - double(n);
+                sum += x(n) * sinc(d) * sinc(d / kLanczos);
+            }
+            return sum;
+        }
+    }
+    return 0;
+}
+
+double Sampling::error_rms(const Input& in, std::vector<dvec2>* curve) {
+    const long long intervals = std::max<long long>(1, sample_count(in.rate, in.duration) - 1);
+    const int m =
+        static_cast<int>(std::min<long long>(kMaxErrorPoints, intervals * kPointsPerInterval));
+    // The picture keeps every stride-th point of the curve: about 400 of them.
+    const int stride = std::max(1, m / 400);
+    if (curve) curve->reserve(static_cast<std::size_t>(m / stride + 2));
+    double sum = 0;
+    for (int q = 0; q <= m; ++q) {
+        const double t = in.duration * q / m;
+        const double r = reconstruct(in, t);
+        const double e = r - signal(in.signal, t);
+        sum += e * e;
+        if (curve && (q % stride == 0 || q == m)) curve->push_back({t, r});
+    }
+    return std::sqrt(sum / (m + 1));
+}
+
+double Sampling::image_value(const Input& in, dvec2 p) {
+    const Image& im = in.image;
+    switch (im.kind) {
+        case ImageKind::Edge:
+            return sampling::edge_value(im.point, sampling::edge_direction(im.angle), p);
+        case ImageKind::Checkerboard: {
+            const double below = im.horizon - p.y;
+            if (below <= 0) return 0.5;  // the sky
+            // Camera 1 above the ground: the ground point seen at (x, y) is at distance
+            // Z = focal / (horizon − y) and to the side X = (x − width/2) / (horizon − y).
+            const double X = (p.x - in.width / 2.0) / below, Z = im.focal / below;
+            const double a = std::floor(X / im.square) + std::floor(Z / im.square);
+            return std::fmod(std::fabs(a), 2.0) == 0 ? 1.0 : 0.0;
+        }
+        case ImageKind::ZonePlate: {
+            const dvec2 d = p - dvec2(in.width / 2.0, in.height / 2.0);
+            const double r2 = d.x * d.x + d.y * d.y;
+            return 0.5 * (1 + std::cos(kPi * r2 / (2 * im.nyquist_radius)));
+        }
+    }
+    return 0;
+}
+
+double Sampling::supersample_pixel(const Input& in, int i, int j) {
+    const auto pts = sampling::generate(
+        in.pattern, in.samples, sampling::mix_seed(in.seed, std::uint64_t(i), std::uint64_t(j)),
+        sampling::default_radius(in.samples));
+    double sw = 0, swv = 0;
+    for (const auto& q : pts) {
+        const double w = sampling::weight(in.filter, q.p - dvec2(0.5));
+        sw += w;
+        swv += w * image_value(in, dvec2(i, j) + q.p);
+    }
+    return swv / sw;
+}
+
+namespace {
+
+double rms_difference(const std::vector<double>& a, const std::vector<double>& b) {
+    double s = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
+    return a.empty() ? 0 : std::sqrt(s / double(a.size()));
+}
+
+double nyquist_rate(const std::vector<Sampling::Component>& c) {
+    double f = 0;
+    for (const auto& k : c) f = std::max(f, k.frequency);
+    return 2 * f;
+}
+
+}  // namespace
+
+Sampling::Result Sampling::run(const Input& in) {
+    Result r;
+    r.mode = in.mode;
+    if (in.mode == Mode::Signal) {
+        const long long n = sample_count(in.rate, in.duration);
+        r.samples.reserve(static_cast<std::size_t>(n));
+        for (long long k = 0; k < n; ++k) {
+            const double t = double(k) / in.rate;
+            r.samples.push_back({t, signal(in.signal, t)});
+        }
+        for (const auto& c : in.signal) r.aliases.push_back(fold(c.frequency, c.phase, in.rate));
+        r.nyquist_rate = nyquist_rate(in.signal);
+        r.error_rms = error_rms(in);
+        return r;
+    }
+    r.width = in.width, r.height = in.height;
+    const std::size_t n = std::size_t(in.width) * in.height;
+    r.point_sampled.reserve(n);
+    r.supersampled.reserve(n);
+    for (int j = 0; j < in.height; ++j)
+        for (int i = 0; i < in.width; ++i) {
+            r.point_sampled.push_back(image_value(in, {i + 0.5, j + 0.5}));
+            r.supersampled.push_back(supersample_pixel(in, i, j));
+        }
+    r.rms_difference = rms_difference(r.point_sampled, r.supersampled);
+    return r;
+}
+
+// ---- [spec] ---------------------------------------------------------------------------------
+
+const Spec& Sampling::spec() {
+    static const Spec spec{
+        "sampling",
+        "Sampling, aliasing and the Nyquist limit",
+        "Ray Tracing",
+        {
+            "for n = 0, 1, …: x_n ← s(n / f_s)            ▷ s(t) = Σ A sin(2π f t + φ)",
+            "for each frequency f: k ← round(f / f_s);  alias ← |f − k f_s|   ▷ aliased if f_s ≤ "
+            "2f",
+            "r(t) ← reconstruct(x_n) (nearest, linear, windowed sinc);  error ← rms(r − s)",
+            "for each row j: pixel ← f(centre);  supersampled ← Σ w f(samples) / Σ w",
+            "compare the two images: rms difference",
+        },
+        {
+            {"sample", "one sample x_n = s(t_n), with each frequency's share"},
+            {"fold", "a frequency at or above f_s/2 folds to its alias |f − k f_s|"},
+            {"below-nyquist", "a frequency below f_s/2: the samples keep it as it is"},
+            {"reconstruct", "the curve rebuilt from the samples, and its RMS error"},
+            {"row", "one row of pixels sampled once at the centre and supersampled"},
+            {"compare", "the point-sampled and the supersampled image side by side"},
+        },
+    };
+    return spec;
+}
+
+// ---- [validate] -----------------------------------------------------------------------------
+
+void Sampling::validate(const Input& in) {
+    if (in.mode == Mode::Signal) {
+        if (in.signal.empty() || in.signal.size() > std::size_t(kMaxComponents))
+            throw InputError("signal", "must list between 1 and " + std::to_string(kMaxComponents) +
+                                           " sines (got " + std::to_string(in.signal.size()) + ")");
+        for (std::size_t k = 0; k < in.signal.size(); ++k) {
+            const std::string f = "signal[" + std::to_string(k) + "]";
+            const Component& c = in.signal[k];
+            check_finite(c.frequency, f + ".frequency");
+            check_finite(c.amplitude, f + ".amplitude");
+            check_finite(c.phase, f + ".phase");
+            if (c.frequency < 0 || c.frequency > kMaxFrequency)
+                throw InputError(f + ".frequency",
+                                 "must be between 0 and 10¹² (got " + num(c.frequency) + ")");
+            if (std::fabs(c.amplitude) > 1e6)
+                throw InputError(f + ".amplitude",
+                                 "must be within ±10⁶ (got " + num(c.amplitude) + ")");
+            if (std::fabs(c.phase) > 1e6)
+                throw InputError(f + ".phase",
+                                 "must be within ±10⁶ degrees (got " + num(c.phase) + ")");
+        }
+        check_finite(in.rate, "rate");
+        check_finite(in.duration, "duration");
+        if (in.rate <= 0 || in.rate > kMaxFrequency)
+            throw InputError("rate",
+                             "must be positive and at most 10¹² (got " + num(in.rate) + ")");
+        if (in.duration <= 0)
+            throw InputError("duration", "must be positive (got " + num(in.duration) + ")");
+        if (in.duration * in.rate > double(kMaxSamples - 1))
+            throw InputError("duration", "gives " + num(std::floor(in.duration * in.rate) + 1) +
+                                             " samples at this rate; at most " +
+                                             std::to_string(kMaxSamples) + " are allowed");
+        // f t must stay small enough for sin to keep its digits: at most 10⁹ cycles over the
+        // times the samples are taken at (the duration, and the 4 + 1 sample periods beyond it
+        // that the reconstruction reads).
+        const double beyond = (kLanczos + 1) / in.rate;
+        for (std::size_t k = 0; k < in.signal.size(); ++k) {
+            const double f = in.signal[k].frequency;
+            if (!(f * (in.duration + beyond) > 1e9)) continue;
+            if (beyond > in.duration)
+                throw InputError("rate", "is too low for signal[" + std::to_string(k) +
+                                             "]: 5 sample periods of it hold more than 10⁹ "
+                                             "cycles (got " +
+                                             num(in.rate) + ")");
+            throw InputError("signal[" + std::to_string(k) + "].frequency",
+                             "makes more than 10⁹ cycles over the duration (got " + num(f) + ")");
+        }
+        return;
+    }
+    if (in.width < 1 || in.width > kMaxSide)
+        throw InputError("width", "must be between 1 and " + std::to_string(kMaxSide) + " (got " +
+                                      std::to_string(in.width) + ")");
+    if (in.height < 1 || in.height > kMaxSide)
+        throw InputError("height", "must be between 1 and " + std::to_string(kMaxSide) + " (got " +
+                                       std::to_string(in.height) + ")");
+    if (in.samples < 1 || in.samples > kMaxSupersamples)
+        throw InputError("supersampling.samples", "must be between 1 and " +
+                                                      std::to_string(kMaxSupersamples) + " (got " +
+                                                      std::to_string(in.samples) + ")");
+    if (sampling::is_grid(in.pattern) && sampling::grid_side(in.samples) == 0)
+        throw InputError("supersampling.samples",
+                         std::string("must be a square number n × n (1, 4, 9, 16, …) for the ") +
+                             sampling::pattern_id(in.pattern) + " pattern (got " +
+                             std::to_string(in.samples) + ")");
+    if (in.pattern == sampling::Pattern::Poisson &&
+        double(in.width) * in.height * in.samples * in.samples > kMaxPoissonWork)
+        throw InputError("supersampling.samples",
+                         "makes Poisson dart throwing cost about " +
+                             num(double(in.width) * in.height * in.samples * in.samples) +
+                             " distance tests for the image (samples² per pixel); at most 10⁹ "
+                             "are allowed: use fewer samples or pixels");
+    if (double(in.width) * in.height * in.samples > kMaxImageWork)
+        throw InputError("supersampling.samples",
+                         "makes " + num(double(in.width) * in.height * in.samples) +
+                             " samples for the image; at most 4·10⁶ are allowed");
+    const Image& im = in.image;
+    switch (im.kind) {
+        case ImageKind::Edge:
+            check_finite(im.angle, "image.angle");
+            for (int c = 0; c < 2; ++c) {
+                const std::string f = "image.point[" + std::to_string(c) + "]";
+                check_finite(im.point[c], f);
+                if (std::fabs(im.point[c]) > 1e6)
+                    throw InputError(f,
+                                     "must be within ±10⁶ pixels (got " + num(im.point[c]) + ")");
+            }
+            break;
+        case ImageKind::Checkerboard:
+            check_finite(im.horizon, "image.horizon");
+            check_finite(im.square, "image.square");
+            check_finite(im.focal, "image.focal");
+            if (im.horizon <= 0 || im.horizon > 1e6)
+                throw InputError("image.horizon",
+                                 "must be above the bottom row: between 0 (excluded) "
+                                 "and 10⁶ pixels (got " +
+                                     num(im.horizon) + ")");
+            if (im.square < 1e-6 || im.square > 1e6)
+                throw InputError("image.square",
+                                 "must be between 10⁻⁶ and 10⁶ (got " + num(im.square) + ")");
+            if (im.focal < 1e-6 || im.focal > 1e6)
+                throw InputError("image.focal",
+                                 "must be between 10⁻⁶ and 10⁶ pixels (got " + num(im.focal) + ")");
+            break;
+        case ImageKind::ZonePlate:
+            check_finite(im.nyquist_radius, "image.nyquist_radius");
+            if (im.nyquist_radius < 1e-3 || im.nyquist_radius > 1e6)
+                throw InputError(
+                    "image.nyquist_radius",
+                    "must be between 10⁻³ and 10⁶ pixels (got " + num(im.nyquist_radius) + ")");
+            break;
+    }
+}
+
+Sampling::State Sampling::start(const Input& in) {
+    validate(in);
+    State s;
+    s.in = Shared<Input>(in);
+    if (in.mode == Mode::Signal) {
+        s.phase = Phase::Sample;
+        s.count = sample_count(in.rate, in.duration);
+        s.samples.reserve(static_cast<std::size_t>(s.count));
+    } else {
+        s.phase = Phase::Row;
+        s.point_sampled.reserve(std::size_t(in.width) * in.height);
+        s.supersampled.reserve(std::size_t(in.width) * in.height);
+    }
+    s.last = s.phase;
+    return s;
+}
+
+// ---- [advance] ------------------------------------------------------------------------------
+
+void Sampling::advance(State& s) {
+    const Input& in = *s.in;
+    s.last = s.phase;
+    switch (s.phase) {
+        case Phase::Sample: {  // x_n = s(n / f_s)
+            const double t = double(s.samples.size()) / in.rate;
+            s.samples.push_back({t, signal(in.signal, t)});
+            if (std::ssize(s.samples) == s.count) s.phase = Phase::Fold;
+            return;
+        }
+        case Phase::Fold: {  // One frequency's alias
+            const Component& c = in.signal[s.aliases.size()];
+            s.aliases.push_back(fold(c.frequency, c.phase, in.rate));
+            if (s.aliases.size() == in.signal.size()) s.phase = Phase::Reconstruct;
+            return;
+        }
+        case Phase::Reconstruct:  // The error, and the curve for the picture
+            s.error_rms = error_rms(in, &s.curve);
+            s.phase = Phase::Done;
+            return;
+        case Phase::Row: {  // One row of pixels, both ways
+            const int j = ++s.row;
+            for (int i = 0; i < in.width; ++i) {
+                s.point_sampled.push_back(image_value(in, {i + 0.5, j + 0.5}));
+                s.supersampled.push_back(supersample_pixel(in, i, j));
+            }
+            if (s.row + 1 == in.height) s.phase = Phase::Compare;
+            return;
+        }
+        case Phase::Compare:
+            s.rms_difference = rms_difference(s.point_sampled, s.supersampled);
+            s.phase = Phase::Done;
+            return;
+        case Phase::Done:
+            return;
+    }
+}
+
+// ---- [narrate] ------------------------------------------------------------------------------
+
+namespace {
+
+using State = Sampling::State;
+
+// A sample that is zero but for rounding (sin 2πk) reads as 0 in the narration.
+double tidy(double v) {
+    return std::fabs(v) < 1e-12 ? 0.0 : v;
+}
+
+std::string sine_text(const Sampling::Component& c) {
+    return num(c.amplitude, 4) + " sin(2π·" + num(c.frequency, 6) + "·t" +
+           (c.phase != 0 ? " + " + num(c.phase, 4) + "°" : "") + ")";
+}
+
+void narrate_sample(const State& s, StepInfo& info) {
+    const Sampling::Input& in = *s.in;
+    const std::size_t n = s.samples.size() - 1;
+    const dvec2 x = s.samples.back();
+    info.event = "sample";
+    info.line = kLineSample;
+    std::string parts;
+    if (in.signal.size() > 1) {
+        parts = " = ";
+        for (std::size_t k = 0; k < in.signal.size(); ++k) {
+            const auto& c = in.signal[k];
+            const double v = c.amplitude * std::sin(2 * kPi * c.frequency * x.x + rad(c.phase));
+            parts += (k ? " + " : "") + num(tidy(v), 4);
+        }
+    }
+    info.narration = "Sample " + std::to_string(n) + " at t = " + std::to_string(n) + " / " +
+                     num(in.rate, 6) + " = " + num(x.x, 6) + ": x = s(t)" + parts + " = " +
+                     num(tidy(x.y), 6) + ".";
+    info.math = "x_{" + std::to_string(n) + "} = s(" + tex(x.x, 6) + ") = " + tex(tidy(x.y), 6);
+}
+
+void narrate_fold(const State& s, StepInfo& info) {
+    const Sampling::Input& in = *s.in;
+    const Sampling::Alias& a = s.aliases.back();
+    const auto& c = in.signal[s.aliases.size() - 1];
+    const std::string f = num(a.frequency, 6), fs = num(in.rate, 6), k = std::to_string(a.k);
+    info.line = kLineFold;
+    if (a.aliased) {
+        info.event = "fold";
+        info.narration =
+            sine_text(c) + ": f = " + f + " ≥ f_s/2 = " + num(in.rate / 2, 6) +
+            " (its Nyquist rate 2f = " + num(2 * a.frequency, 6) + " is not below f_s = " + fs +
+            "). k = round(" + f + " / " + fs + ") = " + k + ", so it folds to |" + f + " − " + k +
+            "·" + fs + "| = " + num(a.alias, 6) +
+            (a.alias == a.frequency
+                 ? " — itself, but at exactly f_s = 2f its amplitude and phase are lost"
+                 : "") +
+            ": at every sample time it is indistinguishable from " + num(c.amplitude, 4) +
+            " sin(2π·" + num(a.alias, 6) + "·t + " + num(a.alias_phase, 4) + "°)" +
+            (a.alias_phase != wrap_deg(c.phase) ? " (the fold mirrors it: phase 180° − φ)" : "") +
+            ".";
+    } else {
+        info.event = "below-nyquist";
+        info.narration = sine_text(c) + ": f = " + f + " < f_s/2 = " + num(in.rate / 2, 6) +
+                         ": sampled above its Nyquist rate 2f = " + num(2 * a.frequency, 6) +
+                         ", it is its own alias (k = 0) and the samples keep it.";
+    }
+    info.math = "k = \\mathrm{round}(" + tex(a.frequency, 6) + "/" + tex(in.rate, 6) + ") = " + k +
+                ",\\; |f - k f_s| = " + tex(a.alias, 6);
+}
+
+void narrate_reconstruct(const State& s, StepInfo& info) {
+    const Sampling::Input& in = *s.in;
+    double fmax = 0;
+    bool any = false;
+    for (const auto& a : s.aliases) fmax = std::max(fmax, a.frequency), any = any || a.aliased;
+    info.event = "reconstruct";
+    info.line = kLineReconstruct;
+    const char* how = in.reconstruction == Sampling::Reconstruction::Nearest
+                          ? "nearest sample (a staircase)"
+                      : in.reconstruction == Sampling::Reconstruction::Linear
+                          ? "linear interpolation between neighbouring samples"
+                          : "windowed sinc, Σ x_n sinc(u − n) sinc((u − n)/4)";
+    info.narration = std::string("Reconstruction by ") + how +
+                     ". The Nyquist rate is 2 f_max = " + num(2 * fmax, 6) +
+                     (in.rate > 2 * fmax ? " < " : " ≥ ") + "f_s = " + num(in.rate, 6) +
+                     (any ? ": some frequency is aliased, so no reconstruction can bring it back — "
+                            "the curve follows the alias"
+                          : ": every frequency is below f_s/2") +
+                     ". RMS error against s(t) over [0, " + num(in.duration, 6) +
+                     "]: " + num(s.error_rms, 4) + ".";
+    info.math = "f_{Nyquist} = 2 f_{max} = " + tex(2 * fmax, 6) +
+                ",\\; \\mathrm{rms}(r - s) = " + tex(s.error_rms, 4);
+}
+
+void narrate_row(const State& s, StepInfo& info) {
+    const Sampling::Input& in = *s.in;
+    const std::size_t from = std::size_t(s.row) * in.width;
+    double diff = 0, worst = 0;
+    for (int i = 0; i < in.width; ++i) {
+        const double d = std::fabs(s.point_sampled[from + i] - s.supersampled[from + i]);
+        diff += d, worst = std::max(worst, d);
+    }
+    info.event = "row";
+    info.line = kLineRow;
+    info.narration = "Row " + std::to_string(s.row) + ": " + std::to_string(in.width) +
+                     " pixels sampled once at their centres (left) and with " +
+                     std::to_string(in.samples) + " " + sampling::pattern_id(in.pattern) +
+                     " samples and the " + sampling::filter_id(in.filter) +
+                     " filter (right); they differ by " + num(diff / in.width, 3) +
+                     " on average, at most " + num(worst, 3) + ".";
+    info.math = "\\overline{|p - \\hat p|} = " + tex(diff / in.width, 3);
+}
+
+void narrate_compare(const State& s, StepInfo& info) {
+    const Sampling::Input& in = *s.in;
+    info.event = "compare";
+    info.line = kLineCompare;
+    std::string what;
+    switch (in.image.kind) {
+        case Sampling::ImageKind::Edge:
+            what =
+                "the point-sampled edge is a staircase of whole pixels; supersampled, the "
+                "pixels it crosses take in-between greys";
+            break;
+        case Sampling::ImageKind::Checkerboard:
+            what =
+                "toward the horizon the squares get smaller than a pixel: one sample per "
+                "pixel turns them into moiré, supersampling into the grey they average to";
+            break;
+        case Sampling::ImageKind::ZonePlate:
+            what = "beyond r = ρ = " + num(in.image.nyquist_radius, 4) +
+                   " pixels the rings are finer than ½ cycle per pixel: point sampling shows "
+                   "false rings (aliases) there, supersampling mostly grey";
+            break;
+    }
+    info.narration = std::string("The two images (") + image_id(in.image.kind) + "): " + what +
+                     ". RMS difference " + num(s.rms_difference, 4) + ".";
+    info.math = "\\mathrm{rms}(p - \\hat p) = " + tex(s.rms_difference, 4);
+}
+
+void fill_vars(const State& s, StepInfo& info) {
+    const Sampling::Input& in = *s.in;
+    if (in.mode == Mode::Signal) {
+        info.vars = {{"f_s", in.rate}, {"N", s.count}};
+        if (!s.samples.empty()) {
+            info.vars.push_back({"t_n", s.samples.back().x});
+            info.vars.push_back({"x_n", s.samples.back().y});
+        }
+        if (!s.aliases.empty()) {
+            const auto& a = s.aliases.back();
+            info.vars.push_back({"f", a.frequency});
+            info.vars.push_back({"k", a.k});
+            info.vars.push_back({"alias", a.alias});
+            info.vars.push_back({"aliased", a.aliased});
+        }
+        if (s.last == Phase::Reconstruct) info.vars.push_back({"error_rms", s.error_rms});
+        return;
+    }
+    info.vars = {{"width", static_cast<long long>(in.width)},
+                 {"height", static_cast<long long>(in.height)},
+                 {"samples", static_cast<long long>(in.samples)},
+                 {"row", static_cast<long long>(s.row)}};
+    if (s.last == Phase::Compare) info.vars.push_back({"rms_difference", s.rms_difference});
+}
+
+}  // namespace
+
+void Sampling::narrate(const State& s, StepInfo& info) {
+    info.math.clear();
+    switch (s.last) {
+        case Phase::Sample:
+            narrate_sample(s, info);
+            break;
+        case Phase::Fold:
+            narrate_fold(s, info);
+            break;
+        case Phase::Reconstruct:
+            narrate_reconstruct(s, info);
+            break;
+        case Phase::Row:
+            narrate_row(s, info);
+            break;
+        case Phase::Compare:
+        case Phase::Done:
+            narrate_compare(s, info);
+            break;
+    }
+    fill_vars(s, info);
+}
+
+void Sampling::step(State& s, StepInfo* info) {
+    if (s.phase == Phase::Done) return;
+    advance(s);
+    if (info) narrate(s, *info);
+}
+
+// ---- [result] -------------------------------------------------------------------------------
+
+Sampling::Result Sampling::result(const State& s) {
+    Result r;
+    const Input& in = *s.in;
+    r.mode = in.mode;
+    if (in.mode == Mode::Signal) {
+        r.samples = s.samples;
+        r.aliases = s.aliases;
+        r.nyquist_rate = nyquist_rate(in.signal);
+        r.error_rms = s.error_rms;
+        return r;
+    }
+    r.width = in.width, r.height = in.height;
+    r.point_sampled = s.point_sampled;
+    r.supersampled = s.supersampled;
+    r.rms_difference = s.rms_difference;
+    return r;
+}
+
+// ---- [draw] ---------------------------------------------------------------------------------
+
+namespace {
+
+// 1D: the time plot on top (x = 10 t / duration, y = 1.6 s / Σ|A|): the signal (grey), its
+// samples (stems and dots), the reconstruction (green) and, at a fold, the component and its
+// alias (dashed) through the same samples. Below it the spectrum, 0 … the larger of f_max and
+// f_s on a 10-wide axis: f_s/2 and f_s marked, each frequency a bar of height |A|, and its
+// alias (red when aliased) with the fold as an arrow.
+void draw_signal(const State& s, Scene& scene) {
+    const Sampling::Input& in = *s.in;
+    double amp = 0;
+    for (const auto& c : in.signal) amp += std::fabs(c.amplitude);
+    const double ys = amp > 0 ? 1.6 / amp : 1;
+    const double xs = 10 / in.duration;
+    auto at = [&](double t, double v) { return dvec2(t * xs, v * ys); };
+    scene.segments.push_back({{0, 0}, {10.4, 0}, "", {Role::Construction, 1.0f}, true});
+    scene.labels.push_back({{10.5, -0.1}, "t", {Role::Neutral}});
+    scene.labels.push_back({{10, -0.35}, "t = " + num(in.duration, 6), {Role::Neutral}});
+    scene.labels.push_back(
+        {{0, 2.0}, "s(t) and its samples, f_s = " + num(in.rate, 6), {Role::Neutral}});
+
+    const int m = 300;
+    auto curve = [&](auto&& f, Style style) {
+        Polygon2 p;
+        p.closed = false;
+        p.style = style;
+        p.points.reserve(m + 1);
+        for (int q = 0; q <= m; ++q) {
+            const double t = in.duration * q / m;
+            p.points.push_back(at(t, f(t)));
+        }
+        scene.polygons.push_back(std::move(p));
+    };
+    curve([&](double t) { return Sampling::signal(in.signal, t); }, {Role::Subject, 1.5f});
+
+    if (s.last == Phase::Fold && !s.aliases.empty()) {  // the component and its alias
+        const std::size_t k = s.aliases.size() - 1;
+        const auto c = in.signal[k];
+        const auto a = s.aliases[k];
+        if (in.signal.size() > 1)
+            curve(
+                [&](double t) {
+                    return c.amplitude * std::sin(2 * kPi * c.frequency * t + rad(c.phase));
+                },
+                {Role::Active, 1.5f});
+        curve(
+            [&](double t) {
+                return c.amplitude * std::sin(2 * kPi * a.alias * t + rad(a.alias_phase));
+            },
+            {a.aliased ? Role::Discarded : Role::Kept, 2.0f, true});
+        // The component's own samples, on both curves.
+        for (const auto& x : s.samples) {
+            const double v = c.amplitude * std::sin(2 * kPi * c.frequency * x.x + rad(c.phase));
+            scene.points.push_back({at(x.x, v), "", {Role::Active}, 3.5f});
+        }
+    }
+    if (!s.curve.empty()) {
+        Polygon2 p;
+        p.closed = false;
+        p.style = {Role::Kept, 2.5f};
+        for (const auto& q : s.curve) p.points.push_back(at(q.x, q.y));
+        scene.polygons.push_back(std::move(p));
+    }
+    const bool many = s.samples.size() > 200;
+    for (std::size_t n = 0; n < s.samples.size(); ++n) {
+        const dvec2 p = at(s.samples[n].x, s.samples[n].y);
+        const bool last = n + 1 == s.samples.size() && s.last == Phase::Sample;
+        if (!many) scene.segments.push_back({{p.x, 0}, p, "", {Role::Construction, 1.0f}, false});
+        scene.points.push_back({p,
+                                last ? "x" + std::to_string(n) : "",
+                                {last ? Role::Active : Role::Window},
+                                many ? 2.0f : 4.0f});
+    }
+
+    // The spectrum.
+    const double y0 = -3.6;
+    double fmax = in.rate;
+    for (const auto& c : in.signal) fmax = std::max(fmax, c.frequency);
+    const double fx = 10 / (fmax * 1.05);
+    auto bar_h = [&](double a) { return 1.2 * std::fabs(a) / std::max(amp, 1e-300); };
+    scene.segments.push_back({{0, y0}, {10.4, y0}, "", {Role::Neutral, 1.0f}, true});
+    scene.labels.push_back({{10.5, y0 - 0.1}, "f", {Role::Neutral}});
+    scene.labels.push_back(
+        {{0, y0 + 1.75}, "spectrum: each frequency folds into [0, f_s/2]", {Role::Neutral}});
+    for (int k = 1; k * in.rate / 2 <= fmax * 1.05 && k <= 40; ++k) {
+        const double x = k * in.rate / 2 * fx;
+        const bool nyquist = k == 1;
+        scene.segments.push_back({{x, y0 - 0.2},
+                                  {x, y0 + 1.4},
+                                  "",
+                                  {nyquist ? Role::Window : Role::Construction, 1.0f, true},
+                                  false});
+        if (k <= 4)
+            scene.labels.push_back({{x + 0.05, y0 - 0.45},
+                                    k == 1   ? "f_s/2"
+                                    : k == 2 ? "f_s"
+                                    : k == 3 ? "3f_s/2"
+                                             : "2f_s",
+                                    {nyquist ? Role::Window : Role::Neutral}});
+    }
+    scene.polygons.push_back(
+        {{{0, y0}, {in.rate / 2 * fx, y0}, {in.rate / 2 * fx, y0 + 1.4}, {0, y0 + 1.4}},
+         {Role::Window, 1.0f},
+         true,
+         true});
+    for (std::size_t k = 0; k < in.signal.size(); ++k) {
+        const auto& c = in.signal[k];
+        const double x = c.frequency * fx, h = bar_h(c.amplitude);
+        const bool current = s.last == Phase::Fold && k + 1 == s.aliases.size();
+        scene.segments.push_back({{x, y0},
+                                  {x, y0 + h},
+                                  num(c.frequency, 4),
+                                  {current ? Role::Active : Role::Subject, 3.0f},
+                                  false});
+        if (k < s.aliases.size() && s.aliases[k].aliased && s.aliases[k].alias != c.frequency) {
+            const double xa = s.aliases[k].alias * fx;
+            scene.segments.push_back({{xa, y0}, {xa, y0 + h}, "", {Role::Discarded, 3.0f}, false});
+            scene.labels.push_back(
+                {{xa + 0.05, y0 + h + 0.1}, num(s.aliases[k].alias, 4), {Role::Discarded}});
+            scene.segments.push_back(
+                {{x, y0 + h + 0.15}, {xa, y0 + h + 0.15}, "", {Role::Discarded, 1.5f, true}, true});
+        }
+    }
+}
+
+std::uint32_t grey(double v) {
+    const auto c = static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+    return c << 24 | c << 16 | c << 8 | 0xffu;
+}
+
+// 2D: the point-sampled image at the origin, the supersampled one beside it, filled row by row.
+void draw_image(const State& s, Scene& scene) {
+    const Sampling::Input& in = *s.in;
+    const int w = in.width, h = in.height;
+    const double gap = std::max(2.0, w / 8.0);
+    for (int side = 0; side < 2; ++side) {
+        PixelGrid2 g;
+        g.origin = {side * (w + gap), 0};
+        g.width = w, g.height = h;
+        g.rgba.assign(std::size_t(w) * h, 0);
+        const auto& v = side == 0 ? s.point_sampled : s.supersampled;
+        for (std::size_t k = 0; k < v.size(); ++k) g.rgba[k] = grey(v[k]);
+        g.grid_lines = w <= 32;
+        scene.grids.push_back(std::move(g));
+        const double x0 = side * (w + gap);
+        scene.polygons.push_back({{{x0, 0}, {x0 + w, 0}, {x0 + w, double(h)}, {x0, double(h)}},
+                                  {Role::Construction, 1.0f},
+                                  true,
+                                  false});
+        scene.labels.push_back({{x0, h + std::max(0.6, h / 40.0)},
+                                side == 0 ? "1 sample per pixel (the centre)"
+                                          : std::to_string(in.samples) + " " +
+                                                sampling::pattern_id(in.pattern) + " samples, " +
+                                                sampling::filter_id(in.filter) + " filter",
+                                {Role::Neutral}});
+        if (s.row >= 0 && s.phase != Phase::Done)
+            scene.polygons.push_back({{{x0, double(s.row)},
+                                       {x0 + w, double(s.row)},
+                                       {x0 + w, s.row + 1.0},
+                                       {x0, s.row + 1.0}},
+                                      {Role::Active, 2.0f},
+                                      true,
+                                      false});
+    }
+    if (in.image.kind == Sampling::ImageKind::ZonePlate) {  // the Nyquist circle r = ρ
+        const double r = in.image.nyquist_radius;
+        for (int side = 0; side < 2; ++side) {
+            const dvec2 c(side * (w + gap) + w / 2.0, h / 2.0);
+            Polygon2 p;
+            p.style = {Role::Window, 1.5f, true};
+            for (int a = 0; a < 64; ++a)
+                p.points.push_back(c + r * dvec2(std::cos(a * kPi / 32), std::sin(a * kPi / 32)));
+            scene.polygons.push_back(std::move(p));
+        }
+    } else if (in.image.kind == Sampling::ImageKind::Edge) {
+        scene.handles.push_back({in.image.point, "edge", "/image/point/0", "/image/point/1"});
+    } else {
+        scene.segments.push_back({{0, in.image.horizon},
+                                  {double(w), in.image.horizon},
+                                  "horizon",
+                                  {Role::Window, 1.0f, true},
+                                  false});
+    }
+}
+
+}  // namespace
+
+void Sampling::draw(const State& s, Scene& scene) {
+    if (s.in->mode == Mode::Signal)
+        draw_signal(s, scene);
+    else
+        draw_image(s, scene);
+}
+
+}  // namespace cg
