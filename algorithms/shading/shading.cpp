@@ -121,8 +121,13 @@ const Spec& Shading::spec() {
 
 namespace {
 
+// Appended piece by piece: GCC 12 inlines "[" + s + "]" into its callers and then warns
+// falsely that the copies overlap (-Wrestrict, GCC bug 105329).
 std::string index_text(long long k) {
-    return "[" + std::to_string(k) + "]";
+    std::string text = "[";
+    text += std::to_string(k);
+    text += ']';
+    return text;
 }
 
 void check_size(long long v, const char* field) {

@@ -323,7 +323,7 @@ TEST_CASE(
     WARN("exact coverage, worst difference from the slices: " << worst);
 }
 
-TEST_CASE("supersampling: run to the end equals the plain function; the estimate is Σwv/Σw",
+TEST_CASE("supersampling: run to the end equals the plain function, and the estimate is Σwv/Σw",
           "[sampling][supersampling]") {
     for (int trial = 0; trial < 1500; ++trial) {
         CAPTURE(trial);
