@@ -14,13 +14,18 @@ ExamProblem exam_for_input(const Algorithm& a, const json& input) {
     p.algorithm = a.spec->id;
     p.input = input;
     p.question = a.question ? a.question(input) : "Run " + a.spec->title + " on the input below.";
-    p.answers = a.answer_fields;
+    p.answers = a.answer_fields(input);
     auto run = a.create(input);
     while (!run->done()) run->step(nullptr);
     const json result = a.result(*run);
     p.expected = json::object();
-    for (const std::string& field : p.answers) p.expected[field] = result.at(field);
+    for (const std::string& field : p.answers) p.expected[field] = answer_value(result, field);
     return p;
+}
+
+// A JSON pointer without its first "/".
+const json& answer_value(const json& result, const std::string& field) {
+    return result.at(json::json_pointer("/" + field));
 }
 
 ExamProblem make_exam(const Algorithm& a, std::uint64_t seed) {

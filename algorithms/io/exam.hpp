@@ -29,6 +29,8 @@ ExamProblem make_exam(const Algorithm& a, std::uint64_t seed);
 // The problem for a given input (the question and expected answers for it).
 ExamProblem exam_for_input(const Algorithm& a, const json& input);
 json exam_to_json(const ExamProblem& p);  // {"question", "input", "answers", "expected"}
+// One answer field's value in a result: "a/b" is field b of the object in field a.
+const json& answer_value(const json& result, const std::string& field);
 
 struct FieldGrade {
     std::string field;

@@ -28,7 +28,8 @@ struct Algorithm {
     // Exam practice; empty when the algorithm has no generator (see io/exam.hpp).
     std::function<json(std::uint64_t seed)> exam_input;  // a fresh exam-style input
     std::function<std::string(const json&)> question;    // the question for an input
-    std::vector<std::string> answer_fields;              // the result fields that answer it
+    // The result fields that answer it; "a/b" names field b of the object in field a.
+    std::function<std::vector<std::string>(const json&)> answer_fields;
 };
 
 class Registry {
@@ -56,12 +57,21 @@ struct JsonIo;
 //     static Input exam_input(Rng&);                  // nice numbers, sometimes degenerate
 //     static std::string question(const Input&);
 //     static std::vector<std::string> answer_fields();
+// or, when the question asks different things of different inputs,
+//     static std::vector<std::string> answer_fields(const Input&);
+template <class A>
+concept HasFixedAnswers = requires {
+    { A::answer_fields() } -> std::convertible_to<std::vector<std::string>>;
+};
+template <class A>
+concept HasInputAnswers = requires(const typename A::Input& in) {
+    { A::answer_fields(in) } -> std::convertible_to<std::vector<std::string>>;
+};
 template <class A>
 concept HasExam = requires(Rng& rng, const typename A::Input& in) {
     { A::exam_input(rng) } -> std::same_as<typename A::Input>;
     { A::question(in) } -> std::convertible_to<std::string>;
-    { A::answer_fields() } -> std::convertible_to<std::vector<std::string>>;
-};
+} && (HasFixedAnswers<A> || HasInputAnswers<A>);
 
 template <class A>
 Algorithm make_algorithm() {
@@ -84,7 +94,10 @@ Algorithm make_algorithm() {
             return JsonIo<A>::input_json(A::exam_input(rng));
         };
         a.question = [](const json& j) { return A::question(JsonIo<A>::input(j)); };
-        a.answer_fields = A::answer_fields();
+        if constexpr (HasInputAnswers<A>)
+            a.answer_fields = [](const json& j) { return A::answer_fields(JsonIo<A>::input(j)); };
+        else
+            a.answer_fields = [](const json&) { return A::answer_fields(); };
     }
     return a;
 }

@@ -60,7 +60,7 @@ std::string worked_markdown(const WorkedExample& w) {
     md += "**Answer.**\n\n| | |\n|---|---|\n";
     const auto& fields = w.problem.answers;
     if (!fields.empty()) {
-        for (const std::string& f : fields) md += "| " + f + " | " + show(w.result.at(f)) + " |\n";
+        for (const std::string& f : fields) md += "| " + f + " | " + show(answer_value(w.result, f)) + " |\n";
     } else {
         for (auto it = w.result.begin(); it != w.result.end(); ++it)
             md += "| " + it.key() + " | " + show(it.value()) + " |\n";

@@ -687,16 +687,25 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
             if (distributed && !in.explicit_ray) {
                 const rt::PixelSample& ps = s.samples[n.sample];
                 const rt::Camera& c = sc.camera;
-                std::string over = "over the pixel's area (" +
+                // What the primary rays are spread over (one sample sits at the centre).
+                std::vector<std::string> over;
+                if (s.samples.size() > 1)
+                    over.push_back("the pixel's area (" +
                                    std::string(sampling::pattern_id(sc.settings.pattern)) +
                                    " pattern, " + sampling::filter_id(sc.settings.filter) +
-                                   " filter)";
-                if (c.aperture > 0) over += ", the lens aperture (depth of field)";
-                if (c.shutter > 0) over += ", the shutter time (motion blur)";
+                                   " filter)");
+                if (c.aperture > 0) over.push_back("the lens aperture (depth of field)");
+                if (c.shutter > 0) over.push_back("the shutter time (motion blur)");
+                std::string spread = "one primary ray, through the pixel's centre";
+                if (!over.empty()) {
+                    spread = "primary rays are distributed over " + over[0];
+                    for (std::size_t k = 1; k < over.size(); ++k)
+                        spread += (k + 1 == over.size() ? " and " : ", ") + over[k];
+                }
                 info.narration =
                     "Pixel (" + std::to_string(s.pixel_i) + ", " + std::to_string(s.pixel_j) +
                     "), sample " + std::to_string(n.sample + 1) + " of " +
-                    std::to_string(s.samples.size()) + ": primary rays are distributed " + over +
+                    std::to_string(s.samples.size()) + ": " + spread +
                     ". This one crosses the pixel at (" + num(ps.pixel.x, 4) + ", " +
                     num(ps.pixel.y, 4) + "), filter weight " + num(ps.weight, 4) +
                     (c.aperture > 0
@@ -1198,6 +1207,7 @@ RayTracer::Result RayTracer::result(const State& s) {
         r.tree = s.tree;
         r.details = s.details;
         r.distributed = s.prepared->distributed;
+        r.distribution = rt::distribution(s.in->scene);
         r.samples = s.samples;
     } else {
         r.image = s.image.pixels();

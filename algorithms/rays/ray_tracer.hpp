@@ -182,6 +182,7 @@ struct RayTracer {
         std::vector<RayNode> tree;
         std::vector<rt::SurfaceDetail> details;
         bool distributed = false;
+        rt::Distribution distribution;         // what the scene spreads its rays over
         std::vector<rt::PixelSample> samples;  // the pixel's samples (distributed)
         bool operator==(const Result&) const = default;
     };
@@ -199,10 +200,11 @@ struct RayTracer {
                s.stack.capacity() * sizeof(Frame) + s.samples.capacity() * sizeof(rt::PixelSample);
     }
 
-    // Exam practice (ray_tracer_exam.cpp): one ray into a small scene.
+    // Exam practice (ray_tracer_exam.cpp): one ray into a small scene, traced by hand; or, for
+    // a distributed scene, what each effect spreads its rays over.
     static Input exam_input(Rng& rng);
     static std::string question(const Input& in);
-    static std::vector<std::string> answer_fields();
+    static std::vector<std::string> answer_fields(const Input& in);
 
   private:
     static void advance(State& s);

@@ -1,5 +1,8 @@
-// Exam practice for the ray tracer: one eye ray into a sphere lit by a point light, the course's
-// "trace this ray by hand" question. The numbers are chosen to stay exact: the hit's offset
+// Exam practice for the ray tracer. Most problems are the course's "trace this ray by hand"
+// question: one eye ray into a sphere lit by a point light. Three in ten instead take the same
+// scene into distribution ray tracing (some of: several samples per pixel, a thin lens, a
+// shutter time with the ball moving, an area light, a glossy ball) and ask the other exam
+// question: what each effect spreads its rays over. The numbers are chosen to stay exact: the hit's offset
 // from the centre is a Pythagorean triple times r (so t, P and n are short decimals), the light
 // sits at P + k (a 3-4-5 direction) so l is exact too, and sometimes a second ball is placed
 // on the shadow ray, or the surface is a mirror whose ray escapes to the background.
@@ -33,9 +36,11 @@ double pick(Rng& rng, std::initializer_list<double> xs) {
     return *(xs.begin() + k);
 }
 
-}  // namespace
-
-RayTracer::Input RayTracer::exam_input(Rng& rng) {
+// The by-hand problem.
+RayTracer::Input traced_by_hand(Rng& rng) {
+    using Input = RayTracer::Input;
+    using Granularity = RayTracer::Granularity;
+    using RayKind = RayTracer::RayKind;
     for (;;) {
         Input in;
         rt::Scene& sc = in.scene;
@@ -51,7 +56,7 @@ RayTracer::Input RayTracer::exam_input(Rng& rng) {
         in.ray_direction = {0, 0, pick(rng, {-1, -2})};
 
         sc.camera.eye = E;
-        sc.camera.center = E + dvec3(0, 0, -1);
+        sc.camera.center = tidy(E + dvec3(0, 0, -1));
         sc.settings.max_depth = 1;
         sc.settings.model = rng.chance(0.5) ? rt::Model::Phong : rt::Model::BlinnPhong;
         sc.background = dvec3(pick(rng, {0, 0.1, 0.2}));
@@ -91,14 +96,14 @@ RayTracer::Input RayTracer::exam_input(Rng& rng) {
         }
         // Keep problems a student can finish by hand: the eye ray hits the ball where we aimed
         // (facing the light), and a mirror ray escapes.
-        State s = start(in);
-        while (!done(s)) step(s, nullptr);
-        const Result res = result(s);
-        const RayNode& primary = res.tree.front();
+        RayTracer::State s = RayTracer::start(in);
+        while (!RayTracer::done(s)) RayTracer::step(s, nullptr);
+        const RayTracer::Result res = RayTracer::result(s);
+        const RayTracer::RayNode& primary = res.tree.front();
         if (primary.hit.object != 0 || glm::length(primary.hit.point - P) > 1e-9) continue;
         bool escapes = true;
         int shadow_rays = 0;
-        for (const RayNode& n : res.tree) {
+        for (const RayTracer::RayNode& n : res.tree) {
             if (n.kind == RayKind::Reflected && n.hit.object >= 0) escapes = false;
             if (n.kind == RayKind::Shadow) ++shadow_rays;
         }
@@ -107,7 +112,133 @@ RayTracer::Input RayTracer::exam_input(Rng& rng) {
     }
 }
 
+// The same scene, distributed: the pixel at the centre of a 9 × 9 image looks straight down at
+// the hit, and each effect is on with even odds (one at least).
+void spread(RayTracer::Input& in, Rng& rng) {
+    rt::Scene& sc = in.scene;
+    in.explicit_ray = false;
+    sc.camera.width = sc.camera.height = 9;
+    sc.camera.fov_y_deg = 30;
+    in.pixel = {4.5, 4.5};
+    sc.settings.seed = static_cast<std::uint64_t>(rng.integer(1, 999));
+    bool on[5];
+    for (bool& b : on) b = rng.chance(0.5);
+    if (!(on[0] || on[1] || on[2] || on[3] || on[4])) on[rng.integer(0, 4)] = true;
+    if (on[0]) sc.settings.samples_per_pixel = static_cast<int>(pick(rng, {4, 9, 16}));
+    if (on[1]) {
+        sc.camera.aperture = pick(rng, {0.05, 0.1, 0.2});
+        sc.camera.focal_distance = pick(rng, {4, 5, 6});
+    }
+    if (on[2]) {
+        sc.camera.shutter = pick(rng, {0.5, 1});
+        sc.objects[0].velocity = rng.chance(0.5) ? dvec3(pick(rng, {0.5, 1}), 0, 0) : dvec3(0, pick(rng, {0.5, 1}), 0);
+    }
+    if (on[3]) {
+        rt::Light& L = sc.lights[0];
+        if (rng.chance(0.5)) {
+            L.area = rt::Light::Area::Rectangle;
+            L.edge_u = {pick(rng, {1, 2}), 0, 0};
+            L.edge_v = {0, 0, pick(rng, {1, 2})};
+        } else {
+            L.area = rt::Light::Area::Disc;
+            L.radius = pick(rng, {0.5, 1});
+            L.normal = {0, -1, 0};
+        }
+        L.samples = static_cast<int>(pick(rng, {4, 9, 16}));
+    }
+    if (on[4]) {
+        rt::Material& m = sc.materials[0];
+        if (m.kr.x == 0) m.kr = dvec3(0.25);
+        m.gloss = pick(rng, {10, 50, 100});
+        m.gloss_samples = static_cast<int>(pick(rng, {4, 8}));
+    }
+}
+
+// Every effect must show in the pixel's ray tree: each primary ray (moved by the lens or the
+// shutter) still hits the ball, an area light gets shadow rays, a glossy ball reflects. A draw
+// that fails is drawn again; soft shadows alone, which leave the primary ray as it was, always
+// pass.
+void distribute(RayTracer::Input& in, Rng& rng) {
+    for (int attempt = 0;; ++attempt) {
+        RayTracer::Input d = in;
+        spread(d, rng);
+        if (attempt == 20) {  // a ball at the rim of the view: soft shadows only
+            d = in;
+            d.explicit_ray = false;
+            d.scene.camera.width = d.scene.camera.height = 9;
+            d.scene.camera.fov_y_deg = 30;
+            d.pixel = {4.5, 4.5};
+            rt::Light& L = d.scene.lights[0];
+            L.area = rt::Light::Area::Disc;
+            L.radius = 0.5;
+            L.normal = {0, -1, 0};
+            L.samples = 4;
+        }
+        RayTracer::State s = RayTracer::start(d);
+        while (!RayTracer::done(s)) RayTracer::step(s, nullptr);
+        const RayTracer::Result res = RayTracer::result(s);
+        const rt::Distribution want = rt::distribution(d.scene);
+        bool all_hit = true, area = false, glossy = false;
+        for (const RayTracer::RayNode& n : res.tree) {
+            if (n.kind == RayTracer::RayKind::Primary) all_hit = all_hit && n.hit.object == 0;
+            area = area || n.light_sample >= 0;
+            glossy = glossy || n.glossy;
+        }
+        if (all_hit && area == want.soft_shadows && glossy == want.glossy_reflection) {
+            in = d;
+            return;
+        }
+    }
+}
+
+}  // namespace
+
+RayTracer::Input RayTracer::exam_input(Rng& rng) {
+    Input in = traced_by_hand(rng);
+    if (rng.chance(0.3)) distribute(in, rng);  // drawn last: the by-hand scenes stay as they were
+    return in;
+}
+
+namespace {
+
+// "what is each effect's rays spread over": the scene's distribution in words.
+std::string distribution_question(const RayTracer::Input& in) {
+    const rt::Scene& sc = in.scene;
+    const rt::Distribution d = rt::distribution(sc);
+    const rt::Light& L = sc.lights[0];
+    const rt::Material& m = sc.materials[0];
+    const rt::Object& ball = sc.objects[0];
+    std::string q = "A ball of radius " + num(ball.quadric.r) + " centred at " +
+                    num(dvec3(ball.quadric.world_from_model[3])) + ", seen from " +
+                    num(sc.camera.eye) + " looking down −z, is rendered by distribution ray tracing:";
+    if (d.anti_aliasing)
+        q += " " + std::to_string(sc.settings.samples_per_pixel) + " jittered samples per pixel;";
+    if (d.depth_of_field)
+        q += " a thin lens of radius " + num(sc.camera.aperture) + " focused at distance " +
+             num(sc.camera.focal_distance) + ";";
+    if (d.motion_blur)
+        q += " a shutter open over [0, " + num(sc.camera.shutter) + "] while the ball moves at " +
+             num(ball.velocity) + " per unit time;";
+    if (d.soft_shadows)
+        q += L.area == rt::Light::Area::Rectangle
+                 ? " the light is a rectangle at " + num(L.position) + " with edges " +
+                       num(L.edge_u) + " and " + num(L.edge_v) + ", sampled by " +
+                       std::to_string(L.samples) + " shadow rays;"
+                 : " the light is a disc of radius " + num(L.radius) + " at " + num(L.position) +
+                       ", sampled by " + std::to_string(L.samples) + " shadow rays;";
+    if (d.glossy_reflection)
+        q += " the ball is glossy (Phong exponent " + num(m.gloss) + ", " +
+             std::to_string(m.gloss_samples) + " reflected rays per hit);";
+    q.back() = '.';
+    q += " For each effect, name what its rays are distributed over: one of pixel area, lens "
+         "aperture, shutter time, light area, Phong lobe.";
+    return q;
+}
+
+}  // namespace
+
 std::string RayTracer::question(const Input& in) {
+    if (rt::distributed(in.scene)) return distribution_question(in);
     const rt::Scene& sc = in.scene;
     const rt::Material& m = sc.materials[0];
     const rt::Light& L = sc.lights[0];
@@ -132,8 +263,17 @@ std::string RayTracer::question(const Input& in) {
     return q;
 }
 
-std::vector<std::string> RayTracer::answer_fields() {
-    return {"t", "point", "normal", "shadowed", "reflected", "color"};
+std::vector<std::string> RayTracer::answer_fields(const Input& in) {
+    if (!rt::distributed(in.scene))
+        return {"t", "point", "normal", "shadowed", "reflected", "color"};
+    const rt::Distribution d = rt::distribution(in.scene);
+    std::vector<std::string> fields;
+    if (d.anti_aliasing) fields.push_back("distributed_over/anti_aliasing");
+    if (d.depth_of_field) fields.push_back("distributed_over/depth_of_field");
+    if (d.motion_blur) fields.push_back("distributed_over/motion_blur");
+    if (d.soft_shadows) fields.push_back("distributed_over/soft_shadows");
+    if (d.glossy_reflection) fields.push_back("distributed_over/glossy_reflection");
+    return fields;
 }
 
 }  // namespace cg

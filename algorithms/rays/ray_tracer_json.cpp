@@ -16,9 +16,13 @@
 //           "color", "weight"}, …]; distributed scenes also give each node its "time", a
 //           primary ray its "sample", a shadow ray to an area light its "light_sample", a glossy
 //           ray "glossy": true, and "distributed": {"primary": what primary rays are spread
-//           over ("pixel area", "lens aperture", "shutter time"), "shadow": "light area" | null,
-//           "reflected": "Phong lobe about the mirror direction" | null, "samples": [[x, y,
-//           weight, time], …]}}
+//           over (of "pixel area", "lens aperture", "shutter time"; [] for one ray through the
+//           pixel's centre), "shadow": "light area" | null,
+//           "reflected": "Phong lobe" (about the mirror direction) | null, "samples": [[x, y,
+//           weight, time], …]}, and "distributed_over": for each effect the scene has, what its
+//           rays are spread over: {"anti_aliasing": "pixel area", "depth_of_field": "lens
+//           aperture", "motion_blur": "shutter time", "soft_shadows": "light area",
+//           "glossy_reflection": "Phong lobe"}}
 #include "io/registry.hpp"
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_scene_json.hpp"
@@ -185,14 +189,29 @@ struct JsonIo<RayTracer> {
         j["reflected"] = std::move(reflected);
         j["refracted"] = std::move(refracted);
         j["tree"] = std::move(tree);
-        if (r.distributed) j["distributed"] = distributed_json(r);
+        if (r.distributed) {
+            j["distributed"] = distributed_json(r);
+            j["distributed_over"] = distributed_over_json(r.distribution);
+        }
+        return j;
+    }
+
+    // The course's table, for the effects this scene has.
+    static json distributed_over_json(const rt::Distribution& d) {
+        json j = json::object();
+        if (d.anti_aliasing) j["anti_aliasing"] = "pixel area";
+        if (d.depth_of_field) j["depth_of_field"] = "lens aperture";
+        if (d.motion_blur) j["motion_blur"] = "shutter time";
+        if (d.soft_shadows) j["soft_shadows"] = "light area";
+        if (d.glossy_reflection) j["glossy_reflection"] = "Phong lobe";
         return j;
     }
 
     // Which quantity each kind of ray is distributed over in this scene, and the pixel's
     // samples [x, y, weight, time] (x, y in the pixel, from its bottom-left corner).
     static json distributed_json(const RayTracer::Result& r) {
-        json primary = json::array({"pixel area"});
+        json primary = json::array();
+        if (r.distribution.anti_aliasing) primary.push_back("pixel area");
         bool lens = false, shutter = false, area = false, glossy = false;
         for (const auto& n : r.tree) {
             area = area || n.light_sample >= 0;
@@ -208,7 +227,7 @@ struct JsonIo<RayTracer> {
         return json{
             {"primary", std::move(primary)},
             {"shadow", area ? json("light area") : json(nullptr)},
-            {"reflected", glossy ? json("Phong lobe about the mirror direction") : json(nullptr)},
+            {"reflected", glossy ? json("Phong lobe") : json(nullptr)},
             {"samples", std::move(samples)}};
     }
 

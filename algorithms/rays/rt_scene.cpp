@@ -49,14 +49,14 @@ void check_coordinates(dvec3 p, const std::string& field) {
                 "must be a finite number of magnitude at most 1e12 (got " + num(p[k]) + ")");
 }
 
-bool distributed(const Scene& s) {
-    if (s.settings.samples_per_pixel > 1 || s.camera.aperture > 0 || s.camera.shutter > 0)
-        return true;
-    for (const Light& l : s.lights)
-        if (l.area != Light::Area::None) return true;
-    for (const Material& m : s.materials)
-        if (m.gloss > 0) return true;
-    return false;
+Distribution distribution(const Scene& s) {
+    Distribution d;
+    d.anti_aliasing = s.settings.samples_per_pixel > 1;
+    d.depth_of_field = s.camera.aperture > 0;
+    d.motion_blur = s.camera.shutter > 0;
+    for (const Light& l : s.lights) d.soft_shadows = d.soft_shadows || l.area != Light::Area::None;
+    for (const Material& m : s.materials) d.glossy_reflection = d.glossy_reflection || m.gloss > 0;
+    return d;
 }
 
 double tree_rays(const Scene& s) {

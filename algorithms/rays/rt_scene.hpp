@@ -157,9 +157,23 @@ constexpr int kMaxSamplesPerPixel = 1024;
 constexpr int kMaxLightSamples = 1024;
 constexpr int kMaxGlossSamples = 256;
 
-// Whether the scene uses any distribution: more than one sample per pixel, a lens, a shutter
-// time, an area light or a glossy material. Without any, every ray is traced as before.
-bool distributed(const Scene& s);
+// What a scene spreads its rays over, effect by effect (Cook's table, the course's exam
+// question): anti-aliasing spreads the primary rays over the pixel's area (more than one sample
+// per pixel), depth of field over the lens aperture (aperture > 0), motion blur over the shutter
+// time (shutter > 0); soft shadows spread the shadow rays over the light's area (an area light),
+// glossy reflection spreads the reflected rays over the Phong lobe about the mirror direction (a
+// material with gloss > 0).
+struct Distribution {
+    bool anti_aliasing = false, depth_of_field = false, motion_blur = false;
+    bool soft_shadows = false, glossy_reflection = false;
+    bool any() const {
+        return anti_aliasing || depth_of_field || motion_blur || soft_shadows || glossy_reflection;
+    }
+    bool operator==(const Distribution&) const = default;
+};
+Distribution distribution(const Scene& s);
+// Whether the scene uses any distribution. Without any, every ray is traced as before.
+inline bool distributed(const Scene& s) { return distribution(s).any(); }
 
 // The cost of a scene in ray-object tests, worst case: every ray of a primary ray's tree (a
 // full binary tree of depth max_depth when some materials mirror and others refract — or one

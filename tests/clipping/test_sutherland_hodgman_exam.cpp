@@ -109,7 +109,7 @@ TEST_CASE(
     const cg::Algorithm* sh = registry.find("sutherland-hodgman");
     REQUIRE(sh);
     REQUIRE(cg::has_exam(*sh));
-    CHECK(sh->answer_fields == std::vector<std::string>{"after_edge", "polygon"});
+    CHECK(sh->answer_fields(sh->example()) == std::vector<std::string>{"after_edge", "polygon"});
 
     int inside = 0, outside = 0, around = 0, vertex_on = 0, edge_along = 0, degenerate = 0;
     int concave = 0, bridged = 0, rectangles = 0, clockwise = 0, fifths = 0, fallback = 0;

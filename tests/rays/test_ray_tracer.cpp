@@ -7,9 +7,11 @@
 // bad scene files; exam problems; determinism.
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "io/exam.hpp"
@@ -715,10 +717,14 @@ TEST_CASE("ray-tracer: scenes too big to run are refused with their limit",
 
 TEST_CASE("ray-tracer: exam problems are answered right", "[rays][ray-tracer][exam]") {
     const cg::Algorithm& a = tracer();
-    int shadowed = 0, mirrors = 0;
+    int shadowed = 0, mirrors = 0, distributed = 0;
     for (std::uint64_t seed = 1; seed <= 60; ++seed) {
         CAPTURE(seed);
         const cg::ExamProblem p = cg::make_exam(a, seed);
+        if (p.input["stepping"].contains("pixel")) {  // the distribution question: checked below
+            ++distributed;
+            continue;
+        }
         CHECK_THAT(p.question, Catch::Contains("Trace the eye ray"));
         CHECK(p.answers ==
               std::vector<std::string>{"t", "point", "normal", "shadowed", "reflected", "color"});
@@ -745,6 +751,73 @@ TEST_CASE("ray-tracer: exam problems are answered right", "[rays][ray-tracer][ex
     }
     CHECK(shadowed > 5);
     CHECK(mirrors > 5);
+    CHECK(distributed > 10);  // three in ten
+}
+
+// The course's table, read off the input file (not from the tracer's own rt::distribution), and
+// the ray tree must show each effect's rays really spread over that quantity.
+TEST_CASE("ray-tracer: distribution exam problems — what each effect's rays are spread over",
+          "[rays][ray-tracer][exam][distribution]") {
+    const cg::Algorithm& a = tracer();
+    std::map<std::string, int> seen;
+    for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+        CAPTURE(seed);
+        const cg::ExamProblem p = cg::make_exam(a, seed);
+        const cg::json& in = p.input;
+        if (!in["stepping"].contains("pixel")) continue;
+        CHECK_THAT(p.question, Catch::Contains("distributed over"));
+        std::map<std::string, std::string> want;
+        const int spp = in["settings"].value("samples_per_pixel", 1);
+        if (spp > 1) want["anti_aliasing"] = "pixel area";
+        if (in["camera"].value("aperture", 0.0) > 0) want["depth_of_field"] = "lens aperture";
+        if (in["camera"].value("shutter", 0.0) > 0) want["motion_blur"] = "shutter time";
+        if (in["lights"][0].contains("area")) want["soft_shadows"] = "light area";
+        if (in["materials"][0].value("gloss", 0.0) > 0) want["glossy_reflection"] = "Phong lobe";
+        REQUIRE_FALSE(want.empty());
+        std::vector<std::string> fields;
+        for (const auto& [effect, over] : want) {
+            fields.push_back("distributed_over/" + effect);
+            CHECK(p.expected.at("distributed_over/" + effect) == over);
+            ++seen[effect];
+        }
+        std::vector<std::string> answers = p.answers;
+        std::sort(answers.begin(), answers.end());
+        CHECK(answers == fields);
+        // The trace spreads the rays as the answer says.
+        auto run = a.create(in);
+        while (!run->done()) run->step(nullptr);
+        const cg::json result = a.result(*run);
+        int primaries = 0, area_shadows = 0, glossy = 0;
+        std::set<double> times;
+        bool off_axis_origin = false;
+        const cg::json& eye = in["camera"]["eye"];
+        for (const cg::json& n : result["tree"]) {
+            if (n["kind"] == "primary") {
+                ++primaries;
+                times.insert(n["time"].get<double>());
+                off_axis_origin = off_axis_origin || n["origin"] != eye;
+            }
+            area_shadows += n.contains("light_sample");
+            glossy += n.value("glossy", false);
+        }
+        CHECK(primaries == spp);
+        CHECK(off_axis_origin == want.contains("depth_of_field"));
+        if (want.contains("motion_blur"))
+            CHECK(*times.rbegin() > 0);
+        else
+            CHECK(times == std::set<double>{0.0});
+        CHECK((area_shadows > 0) == want.contains("soft_shadows"));
+        CHECK((glossy > 0) == want.contains("glossy_reflection"));
+        // Grading accepts the expected answers and refuses a swapped pair.
+        for (const auto& g : cg::grade(p, p.expected)) CHECK(g.correct);
+        cg::json wrong = p.expected;
+        const std::string& first = p.answers[0];
+        wrong[first] = p.expected[first] == "light area" ? "pixel area" : "light area";
+        CHECK_FALSE(cg::grade(p, wrong)[0].correct);
+    }
+    for (const char* effect :
+         {"anti_aliasing", "depth_of_field", "motion_blur", "soft_shadows", "glossy_reflection"})
+        CHECK(seen[effect] > 10);
 }
 
 TEST_CASE("ray-tracer: traces are deterministic and stepping back reproduces them",
