@@ -398,7 +398,7 @@ void Quaternion::validate(const Input& in) {
 Quaternion::State Quaternion::start(const Input& in) {
     validate(in);
     State s;
-    s.in = in;
+    s.in = Shared<Input>(in);
     s.phase = s.last = first_phase(in.op);
     return s;
 }
@@ -406,7 +406,7 @@ Quaternion::State Quaternion::start(const Input& in) {
 // ---- [advance] ------------------------------------------------------------------------------
 
 void Quaternion::advance(State& s) {
-    const Input& in = s.in;
+    const Input& in = *s.in;
     s.last = s.phase;
     switch (s.phase) {
         case Phase::ScalarPart:  // s1 s2 − v1 · v2
@@ -513,7 +513,7 @@ namespace {
 using State = Quaternion::State;
 
 void narrate_multiply(const State& s, StepInfo& info) {
-    const dquat &a = s.in.q1, &b = s.in.q2;
+    const dquat &a = s.in->q1, &b = s.in->q2;
     const std::string nums = "q1 = " + qtext(a) + ", q2 = " + qtext(b) + ". ";
     switch (s.last) {
         case Phase::ScalarPart:
@@ -582,14 +582,14 @@ void narrate_multiply(const State& s, StepInfo& info) {
 }
 
 void narrate_conjugate(const State& s, StepInfo& info) {
-    const dquat& q = s.in.q;
+    const dquat& q = s.in->q;
     const double n2 = s.norm * s.norm;
     switch (s.last) {
         case Phase::Conjugate:
             info.event = "conjugate";
             info.line = kLineConjugate;
             info.narration = "q = " + qtext(q) + ", so q̄ = (s, −v) = " + qtext(s.conj) +
-                             (s.in.op == Op::Inverse ? " (the first half of q⁻¹ = q̄ / |q|²)."
+                             (s.in->op == Op::Inverse ? " (the first half of q⁻¹ = q̄ / |q|²)."
                                                      : ". As a rotation it is q's turn undone.");
             info.math = "\\bar q = (s, -v) = " + qtex(s.conj);
             return;
@@ -623,14 +623,14 @@ void narrate_conjugate(const State& s, StepInfo& info) {
 
 std::string normalise_text(const State& s) {
     const std::string t = std::fabs(s.norm - 1) <= 1e-12
-                              ? "q = " + qtext(s.in.q, 6) + " is already unit length"
-                              : "q = " + qtext(s.in.q, 6) + " has length " + num(s.norm, 6) +
+                              ? "q = " + qtext(s.in->q, 6) + " is already unit length"
+                              : "q = " + qtext(s.in->q, 6) + " has length " + num(s.norm, 6) +
                                     ", so it is normalised first: q ← q / |q| = " + qtext(s.unit);
     return t + ": " + turn_text(s.unit) + ".";
 }
 
 void narrate_rotate(const State& s, StepInfo& info) {
-    const dvec3& p = s.in.point;
+    const dvec3& p = s.in->point;
     info.line = kLineRotate;
     switch (s.last) {
         case Phase::Normalise:
@@ -671,11 +671,11 @@ void narrate_rotate(const State& s, StepInfo& info) {
 
 void narrate_axis_angle(const State& s, StepInfo& info) {
     info.line = kLineAxisAngle;
-    const double half = s.in.angle_deg / 2;
+    const double half = s.in->angle_deg / 2;
     switch (s.last) {
         case Phase::UnitAxis:
             info.event = "unit-axis";
-            info.narration = "a = " + vtext(s.in.axis) +
+            info.narration = "a = " + vtext(s.in->axis) +
                              (std::fabs(s.axis_length - 1) <= 1e-12
                                   ? " is already unit length: â = a."
                                   : " has length " + num(s.axis_length, 6) +
@@ -684,7 +684,7 @@ void narrate_axis_angle(const State& s, StepInfo& info) {
             return;
         case Phase::HalfAngle:
             info.event = "half-angle";
-            info.narration = "θ = " + num(s.in.angle_deg, 6) + "°, so θ/2 = " + num(half, 6) +
+            info.narration = "θ = " + num(s.in->angle_deg, 6) + "°, so θ/2 = " + num(half, 6) +
                              "°: cos θ/2 = " + num(rot::clean(s.half_cos), 6) +
                              ", sin θ/2 = " + num(rot::clean(s.half_sin), 6) +
                              " (the half angle: q and −q are the same turn).";
@@ -745,7 +745,7 @@ void narrate_to_matrix(const State& s, StepInfo& info) {
 
 void narrate_from_matrix(const State& s, StepInfo& info) {
     static const char* kName[4] = {"w", "x", "y", "z"};
-    const dmat3& m = s.in.matrix;
+    const dmat3& m = s.in->matrix;
     switch (s.last) {
         case Phase::IsRotation:
             info.event = "is-rotation";
@@ -823,9 +823,9 @@ void narrate_from_matrix(const State& s, StepInfo& info) {
 void fill_vars(const State& s, StepInfo& info) {
     const Phase p = s.last;
     auto at_least = [&](Phase from) { return p >= from; };
-    switch (s.in.op) {
+    switch (s.in->op) {
         case Op::Multiply:
-            info.vars = {{"q1", qvec(s.in.q1)}, {"q2", qvec(s.in.q2)}};
+            info.vars = {{"q1", qvec(s.in->q1)}, {"q2", qvec(s.in->q2)}};
             info.vars.push_back({"s1 s2", s.s1s2});
             info.vars.push_back({"v1 · v2", s.v1v2});
             if (at_least(Phase::VectorPart)) {
@@ -839,16 +839,16 @@ void fill_vars(const State& s, StepInfo& info) {
             return;
         case Op::Conjugate:
         case Op::Inverse:
-            info.vars = {{"q", qvec(s.in.q)}, {"conj(q)", qvec(s.conj)}, {"|q|", s.norm}};
+            info.vars = {{"q", qvec(s.in->q)}, {"conj(q)", qvec(s.conj)}, {"|q|", s.norm}};
             if (at_least(Phase::Norm)) info.vars.push_back({"|q|²", s.norm * s.norm});
             if (at_least(Phase::Invert)) info.vars.push_back({"q⁻¹", qvec(s.q)});
             if (at_least(Phase::CheckInverse)) info.vars.push_back({"q q⁻¹", qvec(s.check)});
             return;
         case Op::Rotate:
         case Op::ToMatrix:
-            info.vars = {{"q", qvec(s.in.q)}, {"|q|", s.norm}, {"q/|q|", qvec(s.unit)}};
-            if (s.in.op == Op::Rotate) {
-                info.vars.push_back({"P", vec(s.in.point)});
+            info.vars = {{"q", qvec(s.in->q)}, {"|q|", s.norm}, {"q/|q|", qvec(s.unit)}};
+            if (s.in->op == Op::Rotate) {
+                info.vars.push_back({"P", vec(s.in->point)});
                 if (at_least(Phase::QTimesP)) info.vars.push_back({"q (0,P)", qvec(s.qp)});
                 if (at_least(Phase::TimesConjugate))
                     info.vars.push_back({"q (0,P) conj(q)", qvec(s.qpq)});
@@ -859,7 +859,7 @@ void fill_vars(const State& s, StepInfo& info) {
             return;
         case Op::FromAxisAngle:
             info.vars = {
-                {"a", vec(s.in.axis)}, {"theta_deg", s.in.angle_deg}, {"â", vec(s.axis_unit)}};
+                {"a", vec(s.in->axis)}, {"theta_deg", s.in->angle_deg}, {"â", vec(s.axis_unit)}};
             if (at_least(Phase::HalfAngle)) {
                 info.vars.push_back({"cos θ/2", s.half_cos});
                 info.vars.push_back({"sin θ/2", s.half_sin});
@@ -868,7 +868,7 @@ void fill_vars(const State& s, StepInfo& info) {
             return;
         case Op::FromMatrix:
             info.vars = {
-                {"R", rot::rows3(s.in.matrix)}, {"max |RᵀR − I|", s.orth_error}, {"det R", s.det}};
+                {"R", rot::rows3(s.in->matrix)}, {"max |RᵀR − I|", s.orth_error}, {"det R", s.det}};
             if (at_least(Phase::Candidates)) {
                 info.vars.push_back({"4w², 4x², 4y², 4z²",
                                      std::vector<double>(s.four_sq.begin(), s.four_sq.end())});
@@ -887,7 +887,7 @@ void fill_vars(const State& s, StepInfo& info) {
 
 void Quaternion::narrate(const State& s, StepInfo& info) {
     info.math.clear();
-    switch (s.in.op) {
+    switch (s.in->op) {
         case Op::Multiply:
             narrate_multiply(s, info);
             break;
@@ -930,9 +930,9 @@ void set_turn(Quaternion::Result& r, const dquat& unit) {
 
 Quaternion::Result Quaternion::result(const State& s) {
     Result r;
-    r.op = s.in.op;
+    r.op = s.in->op;
     r.q = s.q;
-    switch (s.in.op) {
+    switch (s.in->op) {
         case Op::Multiply:
             r.q2q1 = s.q2q1;
             r.commute = s.commute;
@@ -1042,7 +1042,7 @@ void arrow(Scene& scene, const dvec3& v, double scale, const std::string& label,
 }
 
 void draw_multiply(const State& s, Scene& scene) {
-    const dvec3 v1 = vpart(s.in.q1), v2 = vpart(s.in.q2);
+    const dvec3 v1 = vpart(s.in->q1), v2 = vpart(s.in->q2);
     const bool crossed = s.phase > Phase::VectorPart;
     const double big = std::max({length3(v1), length3(v2), crossed ? length3(s.cross) : 0.0});
     const double scale = big > 0 ? 1.2 / big : 1.0;  // the longest arrow 1.2 long
@@ -1056,21 +1056,21 @@ void draw_multiply(const State& s, Scene& scene) {
 }
 
 void draw_conjugate(const State& s, Scene& scene) {
-    if (max_abs(s.in.q) == 0) {
+    if (max_abs(s.in->q) == 0) {
         scene.labels3.push_back({{0, -0.4, 0}, "q = 0: no rotation", {Role::Discarded}});
         return;
     }
-    const dquat u = unit_of(s.in.q);
+    const dquat u = unit_of(s.in->q);
     axis_and_turn(scene, u, 1.4, "axis of q");
     frame_of(scene, Slerp::to_matrix(u), "q·", 1.0, 0.9f);
     if (s.phase > Phase::Conjugate || s.phase == Phase::Done)
         frame_of(scene, Slerp::to_matrix(Slerp::conjugate(u)),
-                 s.in.op == Op::Inverse ? "q⁻¹·" : "conj(q)·", 0.8, 0.6f);
+                 s.in->op == Op::Inverse ? "q⁻¹·" : "conj(q)·", 0.8, 0.6f);
 }
 
 void draw_rotate(const State& s, Scene& scene, double reach) {
-    const dquat u = unit_of(s.in.q);
-    const dvec3 p = s.in.point;
+    const dquat u = unit_of(s.in->q);
+    const dvec3 p = s.in->point;
     const auto axis = Quaternion::axis_of(u);
     if (axis) {
         scene.segments3.push_back({-reach * *axis, reach * *axis, "", kAxisStyle, true});
@@ -1104,8 +1104,8 @@ void draw_rotate(const State& s, Scene& scene, double reach) {
 void Quaternion::draw(const State& s, Scene& scene) {
     scene.extent3 = 1.6;
     world_frame(scene);
-    const bool first = s.phase == Quaternion::first_phase(s.in.op);
-    switch (s.in.op) {
+    const bool first = s.phase == Quaternion::first_phase(s.in->op);
+    switch (s.in->op) {
         case Op::Multiply:
             draw_multiply(s, scene);
             return;
@@ -1114,31 +1114,31 @@ void Quaternion::draw(const State& s, Scene& scene) {
             draw_conjugate(s, scene);
             return;
         case Op::Rotate: {
-            const double reach = std::max(1.4, 1.15 * length3(s.in.point));
-            scene.extent3 = std::max(1.6, 1.2 * length3(s.in.point));
+            const double reach = std::max(1.4, 1.15 * length3(s.in->point));
+            scene.extent3 = std::max(1.6, 1.2 * length3(s.in->point));
             draw_rotate(s, scene, reach);
             return;
         }
         case Op::FromAxisAngle: {
-            const dvec3 a = first ? unit_of(s.in.axis) : s.axis_unit;
+            const dvec3 a = first ? unit_of(s.in->axis) : s.axis_unit;
             scene.segments3.push_back({{0, 0, 0}, 1.4 * a, "", kAxisStyle, true});
-            scene.labels3.push_back({1.4 * a, "a = " + vtext(s.in.axis), {Role::Active}});
+            scene.labels3.push_back({1.4 * a, "a = " + vtext(s.in->axis), {Role::Active}});
             if (s.phase > Phase::UnitAxis || s.phase == Phase::Done) {
                 const dvec3 start = rot::perpendicular(a);
-                rot::draw_arc(scene, 0.8 * a, a, start, 0.45, 0, std::fmod(s.in.angle_deg, 360.0),
-                              {Role::Leaving, 2.0f}, true, "θ = " + num(s.in.angle_deg, 4) + "°");
+                rot::draw_arc(scene, 0.8 * a, a, start, 0.45, 0, std::fmod(s.in->angle_deg, 360.0),
+                              {Role::Leaving, 2.0f}, true, "θ = " + num(s.in->angle_deg, 4) + "°");
             }
             if (s.phase == Phase::Done) frame_of(scene, Slerp::to_matrix(s.q), "q·", 1.0, 1.0f);
             return;
         }
         case Op::ToMatrix: {
-            const dquat u = first ? unit_of(s.in.q) : s.unit;
+            const dquat u = first ? unit_of(s.in->q) : s.unit;
             axis_and_turn(scene, u, 1.4, "axis of q");
             if (s.phase == Phase::Done) frame_of(scene, s.matrix, "M", 1.0, 1.0f);
             return;
         }
         case Op::FromMatrix:
-            frame_of(scene, s.in.matrix, "R", 1.0, 1.0f);
+            frame_of(scene, s.in->matrix, "R", 1.0, 1.0f);
             if (s.phase > Phase::Extract || s.phase == Phase::Done)
                 axis_and_turn(scene, s.q, 1.4, "axis of q");
             return;

@@ -42,6 +42,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 
 namespace cg {
 
@@ -112,7 +113,7 @@ struct Quaternion {
     };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // shared by copies (core/shared.hpp)
         Phase phase = Phase::ScalarPart;
         Phase last = Phase::ScalarPart;
         // multiply

@@ -430,17 +430,9 @@ TEST_CASE("ray-tracer: the stepped ray tree gives the plain tracer's colour, bit
         for (int k = 0; k < 5; ++k) {
             const int i = pi(rng), j = pj(rng);
             CAPTURE(trial, i, j);
-            RayTracer::Input in;
-            in.scene = s;
-            in.granularity = RayTracer::Granularity::RayTree;
-            in.pixel = {i + 0.25, j + 0.75};
-            auto st = RayTracer::start(in);
-            while (!RayTracer::done(st)) {
-                cg::StepInfo info;
-                RayTracer::step(st, &info);
-                events.insert(info.event);
-            }
-            const RayTracer::Result r = RayTracer::result(st);
+            const cg::test::RayTree t = cg::test::pixel_tree(s, {i + 0.25, j + 0.75});
+            for (const cg::StepInfo& info : t.steps) events.insert(info.event);
+            const RayTracer::Result& r = t.result;
             rt::RayCounts counts;
             const rt::Color want = rt::pixel_color(s, p, i, j, counts);
             CHECK(r.pixel_i == i);

@@ -217,18 +217,12 @@ TEST_CASE("ray-tracer CSG: the stepped ray tree equals the plain tracer bit for 
             const int i = static_cast<int>(rng.integer(0, s.camera.width - 1)),
                       j = static_cast<int>(rng.integer(0, s.camera.height - 1));
             CAPTURE(trial, i, j);
-            RayTracer::Input in;
-            in.scene = s;
-            in.granularity = RayTracer::Granularity::RayTree;
-            in.pixel = {i + 0.5, j + 0.5};
-            auto st = RayTracer::start(in);
-            while (!RayTracer::done(st)) {
-                cg::StepInfo info;
-                RayTracer::step(st, &info);
+            const cg::test::RayTree t = cg::test::pixel_tree(s, {i + 0.5, j + 0.5});
+            for (const cg::StepInfo& info : t.steps) {
                 events.insert(info.event);
                 csg_hits += info.narration.find("CSG segments") != std::string::npos;
             }
-            const RayTracer::Result r = RayTracer::result(st);
+            const RayTracer::Result& r = t.result;
             rt::RayCounts counts;
             CHECK(r.color == rt::pixel_color(s, p, i, j, counts));  // exactly
             CHECK(r.rays == counts);

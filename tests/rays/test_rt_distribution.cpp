@@ -217,18 +217,12 @@ TEST_CASE("distribution: the stepped ray tree gives the plain tracer's colour, b
             const int i = static_cast<int>(rng() % s.camera.width),
                       j = static_cast<int>(rng() % s.camera.height);
             CAPTURE(trial, i, j);
-            RayTracer::Input in;
-            in.scene = s;
-            in.granularity = RayTracer::Granularity::RayTree;
-            in.pixel = {i + 0.5, j + 0.5};
-            auto st = RayTracer::start(in);
-            while (!RayTracer::done(st)) {
-                cg::StepInfo info;
-                RayTracer::step(st, &info);
+            const cg::test::RayTree t = cg::test::pixel_tree(s, {i + 0.5, j + 0.5});
+            for (const cg::StepInfo& info : t.steps) {
                 events.insert(info.event);
                 REQUIRE(info.narration.find("nan") == std::string::npos);
             }
-            const RayTracer::Result r = RayTracer::result(st);
+            const RayTracer::Result& r = t.result;
             rt::RayCounts counts;
             const rt::Color want = rt::pixel_color(s, p, i, j, counts);
             CHECK(r.color == want);  // exactly

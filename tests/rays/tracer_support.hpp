@@ -1,7 +1,8 @@
 // What the tracer's tests share: a scene read and validated from its JSON text, and one ray's
-// tree stepped to the end.
+// or one pixel's tree stepped to the end.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 
@@ -30,6 +31,15 @@ inline RayTree ray_tree(const rt::Scene& s, glm::dvec3 origin, glm::dvec3 direct
     in.explicit_ray = true;
     in.ray_origin = origin;
     in.ray_direction = direction;
+    return run_traced<RayTracer>(in);
+}
+
+// One pixel's tree (the pixel containing `pixel`), stepped to the end with every step narrated.
+inline RayTree pixel_tree(const rt::Scene& s, glm::dvec2 pixel) {
+    RayTracer::Input in;
+    in.scene = s;
+    in.granularity = RayTracer::Granularity::RayTree;
+    in.pixel = pixel;
     return run_traced<RayTracer>(in);
 }
 
