@@ -110,8 +110,8 @@ void RayAabb::validate(const Input& in) {
     for (int i = 0; i < 3; ++i)
         if (in.min[i] > in.max[i])
             throw InputError(at("box.max", i),
-                             "is less than box.min[" + std::to_string(i) + "] (" +
-                                 num(in.max[i]) + " < " + num(in.min[i]) +
+                             "is less than box.min[" + std::to_string(i) + "] (" + num(in.max[i]) +
+                                 " < " + num(in.min[i]) +
                                  "): the box is empty; it needs min ≤ max on every axis (a flat "
                                  "box, min = max, is allowed)");
     if (in.direction == dvec3(0.0))
@@ -194,6 +194,7 @@ void decide(RayAabb::Result& r) {
 // ---- [step] ---------------------------------------------------------------------------------
 
 void RayAabb::step(State& s, StepInfo* info) {
+    if (s.phase == Phase::Done) return;  // a finished machine stays finished
     s.last = s.phase;
     switch (s.phase) {
         case Phase::Axis: {  // One slab: its two planes (or the parallel case), then t_min/t_max
@@ -249,8 +250,8 @@ void narrate_axis(const State& s, StepInfo& info) {
             text += "d_" + a + " = " + num(d) + " < 0: the ray runs toward −" + a +
                     " and meets the plane " + a + " = max_" + a + " = " + num(mx) +
                     " first. (min_" + a + " − E_" + a + ")/d_" + a + " = (" + num(mn) + " − " +
-                    sub(e) + ")/" + num(d) + " = " + tn(sl.t_far) + " and (max_" + a + " − E_" +
-                    a + ")/d_" + a + " = (" + num(mx) + " − " + sub(e) + ")/" + num(d) + " = " +
+                    sub(e) + ")/" + num(d) + " = " + tn(sl.t_far) + " and (max_" + a + " − E_" + a +
+                    ")/d_" + a + " = (" + num(mx) + " − " + sub(e) + ")/" + num(d) + " = " +
                     tn(sl.t_near) + " are swapped: t_near = " + tn(sl.t_near) +
                     ", t_far = " + tn(sl.t_far) + ".";
             info.math = "t_{near} = \\frac{" + tex(mx) + " - " + subtex(e) + "}{" + tex(d) +
@@ -267,18 +268,20 @@ void narrate_axis(const State& s, StepInfo& info) {
                     (e == mn || e == mx ? " (on a face: the box is closed, so that counts)" : "") +
                     ", so the ray is in this slab for every t: (t_near, t_far) = (−∞, +∞). No "
                     "division is made: (min − E)/0 would be ±∞" +
-                    (e == mn || e == mx ? ", and here it would be 0/0, which has no value" : "") + ".";
+                    (e == mn || e == mx ? ", and here it would be 0/0, which has no value" : "") +
+                    ".";
             info.math = "d_" + a + " = 0,\\; " + tex(mn) + " \\le E_" + a + " = " + tex(e) +
                         " \\le " + tex(mx) + ":\\; (t_{near}, t_{far}) = (-\\infty, +\\infty)";
             break;
         case Case::ParallelOutside:
             info.event = "parallel-outside";
             info.line = kLineParallel;
-            text += "d_" + a + " = 0: the ray is parallel to the " + a + " slab, and E_" + a +
-                    " = " + num(e) + " is " + (e < mn ? "below min_" + a + " = " + num(mn)
-                                                      : "above max_" + a + " = " + num(mx)) +
-                    ", so the ray is never in this slab: it is empty, written (t_near, t_far) = "
-                    "(+∞, −∞) so that the max and min below need no special case.";
+            text +=
+                "d_" + a + " = 0: the ray is parallel to the " + a + " slab, and E_" + a + " = " +
+                num(e) + " is " +
+                (e < mn ? "below min_" + a + " = " + num(mn) : "above max_" + a + " = " + num(mx)) +
+                ", so the ray is never in this slab: it is empty, written (t_near, t_far) = "
+                "(+∞, −∞) so that the max and min below need no special case.";
             info.math = "d_" + a + " = 0,\\; E_" + a + " = " + tex(e) + " \\notin [" + tex(mn) +
                         ", " + tex(mx) + "]:\\; (t_{near}, t_{far}) = (+\\infty, -\\infty)";
             break;
@@ -289,8 +292,7 @@ void narrate_axis(const State& s, StepInfo& info) {
         info.line = kLineEarlyOut;
         text += " Now t_min > t_max: no t is in all the slabs so far, so the ray misses the box";
         text += s.axis < 3 ? std::string(" — the early-out: the ") +
-                                 (s.axis == 1 ? "y and z slabs are" : "z slab is") +
-                                 " not needed."
+                                 (s.axis == 1 ? "y and z slabs are" : "z slab is") + " not needed."
                            : ".";
     }
     info.narration = std::move(text);
@@ -313,8 +315,8 @@ void narrate_verdict(const State& s, StepInfo& info) {
                      : ": the ray leaves one slab before it enters another, so it is never in "
                        "all three at once.") +
                 (r.count < 3 ? " The remaining axes were skipped (the early-out)." : "");
-            info.math = "t_{min} = " + tt(r.t_min) + " > t_{max} = " + tt(r.t_max) +
-                        ":\\ \\text{miss}";
+            info.math =
+                "t_{min} = " + tt(r.t_min) + " > t_{max} = " + tt(r.t_max) + ":\\ \\text{miss}";
             return;
         }
         case Verdict::Behind:
@@ -336,8 +338,8 @@ void narrate_verdict(const State& s, StepInfo& info) {
                           point(r.t_min) + "."
                     : "A hit: t_min = " + tn(r.t_min) + " ≤ t_max = " + tn(r.t_max) +
                           " and t_min ≥ 0. The ray enters the box at t_min, the point " +
-                          point(r.t_min) + ", and leaves it at t_max, the point " +
-                          point(r.t_max) + "; t_hit = t_min = " + tn(r.t_hit) + ".";
+                          point(r.t_min) + ", and leaves it at t_max, the point " + point(r.t_max) +
+                          "; t_hit = t_min = " + tn(r.t_hit) + ".";
             info.math = "0 \\le t_{min} = " + tt(r.t_min) + " \\le t_{max} = " + tt(r.t_max) +
                         ":\\ \\text{hit at } t = " + tt(r.t_hit);
             return;
@@ -352,13 +354,15 @@ void narrate_verdict(const State& s, StepInfo& info) {
                 info.narration = "A hit at t = 0: t_min = 0 ≤ t_max = " + tn(r.t_max) +
                                  ", so E = " + num(E) +
                                  " is on the box's surface and the ray goes in there, leaving "
-                                 "at t_max, the point " + point(r.t_max) + ". t_hit = 0.";
+                                 "at t_max, the point " +
+                                 point(r.t_max) + ". t_hit = 0.";
             else
-                info.narration = "A hit from inside: t_min = " + tn(r.t_min) + " < 0 ≤ t_max = " +
-                                 tn(r.t_max) + ", so the origin E = " + num(E) +
+                info.narration = "A hit from inside: t_min = " + tn(r.t_min) +
+                                 " < 0 ≤ t_max = " + tn(r.t_max) + ", so the origin E = " + num(E) +
                                  " is inside the box (t_min is behind it, where the line came "
                                  "in). The ray meets the box's surface on the way out, at t_max, "
-                                 "the point " + point(r.t_max) + ": t_hit = t_max = " + tn(r.t_hit) +
+                                 "the point " +
+                                 point(r.t_max) + ": t_hit = t_max = " + tn(r.t_hit) +
                                  "; t_min and t_max are both reported.";
             info.math = "t_{min} = " + tt(r.t_min) + " \\le 0 \\le t_{max} = " + tt(r.t_max) +
                         ":\\ \\text{inside, } t_{hit} = " + tt(r.t_hit);
@@ -514,11 +518,15 @@ void RayAabb::draw(const State& s, Scene& scene) {
         const bool now = i == focus && axis_step;
         const float rad = now ? 6.0f : 4.0f;
         if (std::isfinite(sl.t_near))
-            push(scene, Point3{P(sl.t_near), std::string(kAxis[i]) + " near " + num(sl.t_near, 4),
-                               {Role::Entering}, rad});
+            push(scene, Point3{P(sl.t_near),
+                               std::string(kAxis[i]) + " near " + num(sl.t_near, 4),
+                               {Role::Entering},
+                               rad});
         if (std::isfinite(sl.t_far))
-            push(scene, Point3{P(sl.t_far), std::string(kAxis[i]) + " far " + num(sl.t_far, 4),
-                               {Role::Leaving}, rad});
+            push(scene, Point3{P(sl.t_far),
+                               std::string(kAxis[i]) + " far " + num(sl.t_far, 4),
+                               {Role::Leaving},
+                               rad});
     }
 
     // The running interval, or the final one.
@@ -528,14 +536,17 @@ void RayAabb::draw(const State& s, Scene& scene) {
             const double a0 = std::max(r.t_min, 0.0);
             push(scene, Segment3{P(a0), P(r.t_max), "in the box", {Role::Kept, 6.0f}, false});
             if (r.t_min < 0)  // the part of the line in the box behind E
-                push(scene, Segment3{P(std::max(r.t_min, range.lo)), E, "",
-                                     {Role::Kept, 2.0f, true}, false});
+                push(scene,
+                     Segment3{
+                         P(std::max(r.t_min, range.lo)), E, "", {Role::Kept, 2.0f, true}, false});
             push(scene, Point3{P(r.t_hit), "t_hit " + num(r.t_hit, 4), {Role::Kept}, 7.0f});
         } else if (a <= b) {
-            push(scene, Segment3{P(a), P(b), "", {r.verdict == Verdict::Behind ? Role::Discarded
-                                                                               : Role::Active,
-                                                  4.0f},
-                                 false});
+            push(scene,
+                 Segment3{P(a),
+                          P(b),
+                          "",
+                          {r.verdict == Verdict::Behind ? Role::Discarded : Role::Active, 4.0f},
+                          false});
         }
     }
     scene.extent3 = 0;  // fit to the content
@@ -544,7 +555,7 @@ void RayAabb::draw(const State& s, Scene& scene) {
     // (y = 0). Infinite ends run to the strip's edge with an arrow.
     const double lo = range.lo, hi = range.hi, w = hi - lo;
     if (!(w > 0) || !std::isfinite(w)) return;
-    const double h = 0.12 * w;  // row spacing in t units, so the strip keeps its shape
+    const double h = 0.2 * w;  // row spacing in t units, so the strip keeps its shape
     auto row = [&](double y, double a, double b, const std::string& name, Role role, bool active) {
         push2(scene, Segment2{{lo, y}, {hi, y}, "", {Role::Construction, 1.0f}, false});
         push2(scene, Label2{{lo - 0.03 * w, y}, name, {active ? Role::Active : Role::Neutral}});
@@ -557,14 +568,14 @@ void RayAabb::draw(const State& s, Scene& scene) {
     };
     for (int i = 0; i < r.count; ++i) {
         const Slab& sl = r.axes[i];
-        const std::string name = std::string(kAxis[i]) + " slab" +
-                                 (sl.kind == Case::ParallelOutside ? " (empty)" : "");
+        const std::string name =
+            std::string(kAxis[i]) + " slab" + (sl.kind == Case::ParallelOutside ? " (empty)" : "");
         row((3 - i) * h, sl.t_near, sl.t_far, name, Role::Window, i == focus && axis_step);
     }
     const bool hit = r.verdict == Verdict::Hit || r.verdict == Verdict::Inside;
     row(0, r.t_min, r.t_max, "[t_min, t_max]", hit ? Role::Kept : Role::Active, !axis_step);
-    push2(scene, Segment2{{0, -0.5 * h}, {0, 3.5 * h}, "t = 0", {Role::Construction, 1.0f, true},
-                          false});
+    push2(scene,
+          Segment2{{0, -0.5 * h}, {0, 3.5 * h}, "t = 0", {Role::Construction, 1.0f, true}, false});
 }
 
 }  // namespace cg

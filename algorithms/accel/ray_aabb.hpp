@@ -76,8 +76,8 @@ struct RayAabb {
         double t_min = -kInf, t_max = kInf;  // max of the t_near, min of the t_far worked
         double t_hit = 0;                    // the surface point met: t_min, or t_max when inside
         Verdict verdict = Verdict::None;
-        std::array<Slab, 3> axes{};          // x, y, z; only the first `count` were worked
-        int count = 0;                       // 3, or fewer after an early-out
+        std::array<Slab, 3> axes{};  // x, y, z; only the first `count` were worked
+        int count = 0;               // 3, or fewer after an early-out
         bool operator==(const Result&) const = default;
     };
 

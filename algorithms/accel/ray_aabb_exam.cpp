@@ -22,8 +22,8 @@ double nice_component(Rng& rng) {
 glm::dvec3 point_in(Rng& rng, const RayAabb::Input& in) {
     glm::dvec3 p;
     for (int i = 0; i < 3; ++i)
-        p[i] = in.min[i] + 0.5 * static_cast<double>(rng.integer(0, static_cast<long long>(
-                                                                        2 * (in.max[i] - in.min[i]))));
+        p[i] = in.min[i] + 0.5 * static_cast<double>(rng.integer(
+                                     0, static_cast<long long>(2 * (in.max[i] - in.min[i]))));
     return p;
 }
 
@@ -42,8 +42,8 @@ RayAabb::Input RayAabb::exam_input(Rng& rng) {
     switch (rng.integer(0, 9)) {
         case 0:  // anywhere near the box: often a miss with disjoint slabs
             for (int i = 0; i < 3; ++i)
-                in.origin[i] = static_cast<double>(rng.integer(static_cast<long long>(in.min[i]) - 4,
-                                                               static_cast<long long>(in.max[i]) + 4));
+                in.origin[i] = static_cast<double>(rng.integer(
+                    static_cast<long long>(in.min[i]) - 4, static_cast<long long>(in.max[i]) + 4));
             break;
         case 1:  // a component 0, the origin between that axis's planes
             in.direction[axis] = 0;
@@ -52,8 +52,9 @@ RayAabb::Input RayAabb::exam_input(Rng& rng) {
         case 2:  // a component 0, the origin outside that slab: a miss
             in.direction[axis] = 0;
             in.origin = target - k * in.direction;
-            in.origin[axis] = rng.chance(0.5) ? in.max[axis] + static_cast<double>(rng.integer(1, 2))
-                                              : in.min[axis] - static_cast<double>(rng.integer(1, 2));
+            in.origin[axis] = rng.chance(0.5)
+                                  ? in.max[axis] + static_cast<double>(rng.integer(1, 2))
+                                  : in.min[axis] - static_cast<double>(rng.integer(1, 2));
             break;
         case 3:  // the origin inside the box
             in.origin = target;
@@ -74,8 +75,8 @@ RayAabb::Input RayAabb::exam_input(Rng& rng) {
 }
 
 std::string RayAabb::question(const Input& in) {
-    return "Does the ray P(t) = E + t d, t ≥ 0, with E = " + num(in.origin) + " and d = " +
-           num(in.direction) + " meet the box with corners min = " + num(in.min) +
+    return "Does the ray P(t) = E + t d, t ≥ 0, with E = " + num(in.origin) +
+           " and d = " + num(in.direction) + " meet the box with corners min = " + num(in.min) +
            " and max = " + num(in.max) +
            " (closed: its faces belong to it)? Use the slab test, axis by axis in the order x, y, "
            "z: give t_near and t_far of each axis (axes: a list of {\"t_near\": …, \"t_far\": …}, "

@@ -67,7 +67,8 @@ struct JsonIo<RayAabb> {
     static json result(const RayAabb::Result& r) {
         json axes = json::array();
         for (int i = 0; i < r.count; ++i)
-            axes.push_back({{"t_near", t_json(r.axes[i].t_near)}, {"t_far", t_json(r.axes[i].t_far)}});
+            axes.push_back(
+                {{"t_near", t_json(r.axes[i].t_near)}, {"t_far", t_json(r.axes[i].t_far)}});
         return json{{"hit", r.hit},
                     {"verdict", verdict_name(r.verdict)},
                     {"t_min", t_json(r.t_min)},

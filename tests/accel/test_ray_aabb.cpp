@@ -3,7 +3,6 @@
 // against an independent interval computation in long double; no NaN from the infinities;
 // run-to-end equals the plain function; errors naming the field; replay; the picture.
 #include <catch2/catch.hpp>
-
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -54,10 +53,10 @@ Interval slab_interval(double min, double max, double e, double d) {
 
 struct Reference {
     Interval axis[3];
-    Interval line;                     // all three slabs
-    Interval half_line{0, kLInf};      // and t ≥ 0
-    int count = 3;                     // axes worked until the running interval is empty
-    bool ambiguous_count = false;      // a prefix's running interval is empty only by a hair
+    Interval line;                 // all three slabs
+    Interval half_line{0, kLInf};  // and t ≥ 0
+    int count = 3;                 // axes worked until the running interval is empty
+    bool ambiguous_count = false;  // a prefix's running interval is empty only by a hair
     bool overflow = false, near_overflow = false;  // some |t| beyond the double range
 };
 
@@ -132,8 +131,8 @@ RayAabb::Input random_ray(cg::Rng& rng) {
     }
     const double ds = rng.chance(0.8) ? 1.0 : pick_scale(rng);
     for (int i = 0; i < 3; ++i) {
-        in.direction[i] = integers ? ds * static_cast<double>(rng.integer(-3, 3))
-                                   : ds * rng.uniform(-2, 2);
+        in.direction[i] =
+            integers ? ds * static_cast<double>(rng.integer(-3, 3)) : ds * rng.uniform(-2, 2);
         if (rng.chance(0.15)) in.direction[i] = 0;
     }
     const double what = rng.uniform(0, 1);
@@ -153,21 +152,29 @@ RayAabb::Input random_ray(cg::Rng& rng) {
 }
 
 std::string text(const RayAabb::Input& in) {
-    return "min " + cg::num(in.min, 17) + " max " + cg::num(in.max, 17) + " E " + cg::num(in.origin, 17) +
-           " d " + cg::num(in.direction, 17);
+    return "min " + cg::num(in.min, 17) + " max " + cg::num(in.max, 17) + " E " +
+           cg::num(in.origin, 17) + " d " + cg::num(in.direction, 17);
 }
 
 // Every coordinate of a scene is finite ("" if so, else what is not).
 std::string scene_problem(const cg::Scene& s) {
     auto f2 = [](glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); };
-    auto f3 = [](dvec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
-    for (const auto& g : s.segments) if (!f2(g.a) || !f2(g.b)) return "segments";
-    for (const auto& l : s.labels) if (!f2(l.p)) return "labels";
-    for (const auto& p : s.points3) if (!f3(p.p)) return "points3";
-    for (const auto& g : s.segments3) if (!f3(g.a) || !f3(g.b)) return "segments3";
+    auto f3 = [](dvec3 p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    for (const auto& g : s.segments)
+        if (!f2(g.a) || !f2(g.b)) return "segments";
+    for (const auto& l : s.labels)
+        if (!f2(l.p)) return "labels";
+    for (const auto& p : s.points3)
+        if (!f3(p.p)) return "points3";
+    for (const auto& g : s.segments3)
+        if (!f3(g.a) || !f3(g.b)) return "segments3";
     for (const auto& f : s.faces3)
-        for (auto q : f.points) if (!f3(q)) return "faces3";
-    for (const auto& l : s.labels3) if (!f3(l.p)) return "labels3";
+        for (auto q : f.points)
+            if (!f3(q)) return "faces3";
+    for (const auto& l : s.labels3)
+        if (!f3(l.p)) return "labels3";
     return "";
 }
 
@@ -207,21 +214,24 @@ TEST_CASE("ray-aabb: cases worked by hand", "[accel][ray-aabb]") {
         CHECK(t.result.hit);
         CHECK(t.result.verdict == Verdict::Hit);
         CHECK(t.result.t_hit == 1);
-        CHECK_THAT(t.steps[0].narration,
-                   Catch::Contains("t_near = (0 − (-2))/2 = 1") && Catch::Contains("t_far = (4 − (-2))/2 = 3"));
+        CHECK_THAT(t.steps[0].narration, Catch::Contains("t_near = (0 − (-2))/2 = 1") &&
+                                             Catch::Contains("t_far = (4 − (-2))/2 = 3"));
         CHECK_THAT(t.steps[1].narration, Catch::Contains("Running: t_min = 1, t_max = 2."));
-        CHECK_THAT(t.steps[3].narration, Catch::Contains("(0, 1, 1)") && Catch::Contains("(2, 2, 1.5)"));
+        CHECK_THAT(t.steps[3].narration,
+                   Catch::Contains("(0, 1, 1)") && Catch::Contains("(2, 2, 1.5)"));
     }
     SECTION("a miss: x [1, 3] and y [4, 6] (swapped) do not overlap; z is skipped") {
         const auto t = traced(ray({0, 0, 0}, {2, 2, 2}, {-1, 6, 1}, {1, -1, 0.5}));
-        CHECK(cg::test::events(t) == std::vector<std::string>{"slab", "slab-swapped", "miss-disjoint"});
+        CHECK(cg::test::events(t) ==
+              std::vector<std::string>{"slab", "slab-swapped", "miss-disjoint"});
         CHECK(t.result.count == 2);
         CHECK((t.result.axes[1].t_near == 4 && t.result.axes[1].t_far == 6));
         CHECK(t.result.t_min == 4);
         CHECK(t.result.t_max == 3);
         CHECK_FALSE(t.result.hit);
         CHECK(t.steps[1].line == 7);  // the early-out line
-        CHECK_THAT(t.steps[1].narration, Catch::Contains("early-out") && Catch::Contains("z slab is"));
+        CHECK_THAT(t.steps[1].narration,
+                   Catch::Contains("early-out") && Catch::Contains("z slab is"));
     }
     SECTION("negative components: every axis swaps") {
         const auto t = traced(ray({0, 0, 0}, {2, 2, 2}, {5, 3, 1.5}, {-2, -1, -0.5}));
@@ -235,7 +245,8 @@ TEST_CASE("ray-aabb: cases worked by hand", "[accel][ray-aabb]") {
     }
     SECTION("a component 0 inside its slab: (−∞, +∞), t_min and t_max unchanged") {
         const auto t = traced(ray({0, 0, 0}, {2, 2, 2}, {-2, 1, 0.5}, {1, 0.25, 0}));
-        CHECK(cg::test::events(t) == std::vector<std::string>{"slab", "slab", "parallel-inside", "hit"});
+        CHECK(cg::test::events(t) ==
+              std::vector<std::string>{"slab", "slab", "parallel-inside", "hit"});
         CHECK((t.result.axes[2].t_near == -kInf && t.result.axes[2].t_far == kInf));
         CHECK((t.result.t_min == 2 && t.result.t_max == 4 && t.result.hit));
         CHECK_THAT(t.steps[2].narration, Catch::Contains("(−∞, +∞)"));
@@ -251,11 +262,13 @@ TEST_CASE("ray-aabb: cases worked by hand", "[accel][ray-aabb]") {
     }
     SECTION("the origin inside: t_min = -1 < 0 < t_max = 2, the hit is the exit") {
         const auto t = traced(ray({0, 0, 0}, {4, 2, 2}, {1, 1, 1}, {1, 0.5, -0.25}));
-        CHECK(cg::test::events(t) == std::vector<std::string>{"slab", "slab", "slab-swapped", "inside"});
+        CHECK(cg::test::events(t) ==
+              std::vector<std::string>{"slab", "slab", "slab-swapped", "inside"});
         CHECK((t.result.t_min == -1 && t.result.t_max == 2 && t.result.hit));
         CHECK(t.result.verdict == Verdict::Inside);
         CHECK(t.result.t_hit == 2);
-        CHECK_THAT(t.steps[3].narration, Catch::Contains("inside the box") && Catch::Contains("(3, 2, 0.5)"));
+        CHECK_THAT(t.steps[3].narration,
+                   Catch::Contains("inside the box") && Catch::Contains("(3, 2, 0.5)"));
     }
     SECTION("the origin on a face, going in: t_min = 0, t_hit = 0") {
         const auto t = traced(ray({0, 0, 0}, {2, 2, 2}, {0, 1, 1}, {1, 0.5, 0.25}));
@@ -276,7 +289,8 @@ TEST_CASE("ray-aabb: cases worked by hand", "[accel][ray-aabb]") {
         CHECK(cg::test::events(t) ==
               std::vector<std::string>{"slab", "parallel-inside", "parallel-inside", "hit"});
         CHECK((t.result.t_min == 1 && t.result.t_max == 3 && t.result.hit));
-        CHECK_THAT(t.steps[1].narration, Catch::Contains("on a face") && Catch::Contains("0/0, which has no value"));
+        CHECK_THAT(t.steps[1].narration,
+                   Catch::Contains("on a face") && Catch::Contains("0/0, which has no value"));
     }
     SECTION("touching a corner: t_min = t_max = 2") {
         const auto t = traced(ray({0, 0, 0}, {2, 2, 2}, {-2, 2, 0}, {1, -1, 1}));
@@ -299,10 +313,12 @@ TEST_CASE("ray-aabb: cases worked by hand", "[accel][ray-aabb]") {
 
 TEST_CASE("ray-aabb: the lesson's presets are the cases above", "[accel][ray-aabb]") {
     CHECK(lesson().presets.size() == 10);
-    CHECK(RayAabb::intersect(preset("an exam-style hit: in through x = 0, out through y = 2")).t_hit == 1);
-    CHECK(RayAabb::intersect(preset("the box behind the ray: t_max < 0")).verdict == Verdict::Behind);
-    CHECK(RayAabb::intersect(preset("the origin inside the box: t_min < 0, the hit is the exit")).verdict ==
-          Verdict::Inside);
+    CHECK(RayAabb::intersect(preset("an exam-style hit: in through x = 0, out through y = 2"))
+              .t_hit == 1);
+    CHECK(RayAabb::intersect(preset("the box behind the ray: t_max < 0")).verdict ==
+          Verdict::Behind);
+    CHECK(RayAabb::intersect(preset("the origin inside the box: t_min < 0, the hit is the exit"))
+              .verdict == Verdict::Inside);
     for (const auto& p : lesson().presets) {
         CAPTURE(p.name);
         const auto in = input_of(p.input);
@@ -349,7 +365,8 @@ TEST_CASE("ray-aabb: 100,000 random rays against the long-double interval refere
         // (A t's sign is exact in doubles — the sign of a difference of doubles — unless the
         // quotient underflows.)
         auto tiny = [](LD t) { return t != 0 && std::fabs(t) < 1e-305L; };
-        if (ref.ambiguous_count || tiny(ref.line.hi) || tiny(ref.line.lo)) {  // decided by rounding: skip the verdict
+        if (ref.ambiguous_count || tiny(ref.line.hi) ||
+            tiny(ref.line.lo)) {  // decided by rounding: skip the verdict
             ++ambiguous;
             continue;
         }
@@ -367,7 +384,8 @@ TEST_CASE("ray-aabb: 100,000 random rays against the long-double interval refere
             const bool ref_inside = ref.line.lo <= 0;
             REQUIRE((r.verdict == Verdict::Inside) == ref_inside);
             inside += ref_inside;
-            REQUIRE(same_t(r.t_hit, ref.line.lo >= 0 ? ref.line.lo : ref.line.hi));  // exit from inside
+            REQUIRE(
+                same_t(r.t_hit, ref.line.lo >= 0 ? ref.line.lo : ref.line.hi));  // exit from inside
             REQUIRE(same_t(std::max(r.t_min, 0.0), ref.half_line.lo));
         } else if (ref.line.lo > ref.line.hi) {
             REQUIRE(r.verdict == Verdict::Disjoint);
@@ -416,14 +434,17 @@ TEST_CASE("ray-aabb: infinities never make a NaN", "[accel][ray-aabb]") {
                 for (int i = 0; i < r.count; ++i)
                     CHECK_FALSE((std::isnan(r.axes[i].t_near) || std::isnan(r.axes[i].t_far)));
                 CHECK_FALSE((std::isnan(r.t_min) || std::isnan(r.t_max) || std::isnan(r.t_hit)));
-                const bool in_x = 0 <= e && e * scale <= mx.x, in_z = 0 <= e * scale && e * scale <= mx.z;
+                const bool in_x = 0 <= e && e * scale <= mx.x,
+                           in_z = 0 <= e * scale && e * scale <= mx.z;
                 CHECK(r.hit == (in_x && in_z));
             }
 }
 
 TEST_CASE("ray-aabb: infinite t's are written \"inf\" and \"-inf\" in JSON", "[accel][ray-aabb]") {
     const cg::json r = cg::test::result_of(
-        "ray-aabb", std::string(R"({"box": {"min": [0, 0, 0], "max": [2, 2, 2]}, "origin": [1, 1, 5], "direction": [0, 1, 0]})"));
+        "ray-aabb",
+        std::string(
+            R"({"box": {"min": [0, 0, 0], "max": [2, 2, 2]}, "origin": [1, 1, 5], "direction": [0, 1, 0]})"));
     CHECK(r["hit"] == false);
     CHECK(r["verdict"] == "miss-disjoint");
     CHECK(r["axes"] == cg::json::parse(R"([{"t_near": "-inf", "t_far": "inf"},
@@ -433,7 +454,9 @@ TEST_CASE("ray-aabb: infinite t's are written \"inf\" and \"-inf\" in JSON", "[a
     CHECK(r["t_max"] == "-inf");
     CHECK(r["t_hit"].is_null());
     const cg::json h = cg::test::result_of(
-        "ray-aabb", std::string(R"({"box": {"min": [0, 0, 0], "max": [2, 2, 2]}, "origin": [1, 1, 1], "direction": [0, 0, -1]})"));
+        "ray-aabb",
+        std::string(
+            R"({"box": {"min": [0, 0, 0], "max": [2, 2, 2]}, "origin": [1, 1, 1], "direction": [0, 0, -1]})"));
     CHECK(h["verdict"] == "inside");
     CHECK(h["t_min"] == -1.0);
     CHECK(h["t_max"] == 1.0);
@@ -443,34 +466,54 @@ TEST_CASE("ray-aabb: infinite t's are written \"inf\" and \"-inf\" in JSON", "[a
 
 TEST_CASE("ray-aabb: bad input is refused, naming the field", "[accel][ray-aabb]") {
     auto error = [](const std::string& text) { return cg::test::error_of("ray-aabb", text); };
-    CHECK(error(R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})") ==
-          "(accepted)");
-    CHECK(error(R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [0, 0, 0]})") ==
-          "direction: must not be the zero vector (0, 0, 0): a ray needs a direction");
-    CHECK(error(R"({"box": {"min": [0, 2, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})") ==
-          "box.max[1]: is less than box.min[1] (1 < 2): the box is empty; it needs min ≤ max on "
-          "every axis (a flat box, min = max, is allowed)");
-    CHECK(error(R"({"box": {"min": [0, 1, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})") ==
-          "(accepted)");
-    CHECK_THAT(error(R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1e300, 0, 0], "direction": [1e-300, 0, 0]})"),
-               Catch::StartsWith("direction[0]: is too small against the distance to the box"));
-    CHECK_THAT(error(R"({"box": {"min": [0, 0, 0], "max": [1.7e308, 1, 1]}, "origin": [-1.7e308, 0, 0], "direction": [1, 0, 0]})"),
-               Catch::StartsWith("origin[0]: is too far from the box"));
+    CHECK(
+        error(
+            R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})") ==
+        "(accepted)");
+    CHECK(
+        error(
+            R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [0, 0, 0]})") ==
+        "direction: must not be the zero vector (0, 0, 0): a ray needs a direction");
+    CHECK(
+        error(
+            R"({"box": {"min": [0, 2, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})") ==
+        "box.max[1]: is less than box.min[1] (1 < 2): the box is empty; it needs min ≤ max on "
+        "every axis (a flat box, min = max, is allowed)");
+    CHECK(
+        error(
+            R"({"box": {"min": [0, 1, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})") ==
+        "(accepted)");
+    CHECK_THAT(
+        error(
+            R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1e300, 0, 0], "direction": [1e-300, 0, 0]})"),
+        Catch::StartsWith("direction[0]: is too small against the distance to the box"));
+    CHECK_THAT(
+        error(
+            R"({"box": {"min": [0, 0, 0], "max": [1.7e308, 1, 1]}, "origin": [-1.7e308, 0, 0], "direction": [1, 0, 0]})"),
+        Catch::StartsWith("origin[0]: is too far from the box"));
     CHECK_THAT(error(R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0]})"),
                Catch::StartsWith("direction: is missing"));
-    CHECK_THAT(error(R"({"box": {"min": [0, 0, 0]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})"),
-               Catch::StartsWith("box.max: is missing"));
-    CHECK_THAT(error(R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1], "mid": 0}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})"),
-               Catch::StartsWith("box.mid: "));
-    CHECK_THAT(error(R"({"box": {"min": [0, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})"),
-               Catch::StartsWith("box.min: "));
-    CHECK_THAT(error(R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1, "a", 0], "direction": [1, 0, 0]})"),
-               Catch::StartsWith("origin[1]: "));
+    CHECK_THAT(
+        error(R"({"box": {"min": [0, 0, 0]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})"),
+        Catch::StartsWith("box.max: is missing"));
+    CHECK_THAT(
+        error(
+            R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1], "mid": 0}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})"),
+        Catch::StartsWith("box.mid: "));
+    CHECK_THAT(
+        error(
+            R"({"box": {"min": [0, 0], "max": [1, 1, 1]}, "origin": [-1, 0, 0], "direction": [1, 0, 0]})"),
+        Catch::StartsWith("box.min: "));
+    CHECK_THAT(
+        error(
+            R"({"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "origin": [-1, "a", 0], "direction": [1, 0, 0]})"),
+        Catch::StartsWith("origin[1]: "));
     CHECK_THROWS_WITH(RayAabb::start(ray({0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {1, kInf, 0})),
                       Catch::StartsWith("direction[1]: must be a finite number"));
 }
 
-TEST_CASE("ray-aabb: deterministic traces, replay on the example and the presets", "[accel][ray-aabb]") {
+TEST_CASE("ray-aabb: deterministic traces, replay on the example and the presets",
+          "[accel][ray-aabb]") {
     const cg::Algorithm& a = cg::test::algorithm("ray-aabb");
     cg::test::check_replay(a, a.example(), cg::test::kEveryStep);
     for (const auto& p : lesson().presets) {
@@ -479,8 +522,9 @@ TEST_CASE("ray-aabb: deterministic traces, replay on the example and the presets
     }
 }
 
-TEST_CASE("ray-aabb: the picture — the box, the current slab's planes, the points, the segment inside",
-          "[accel][ray-aabb]") {
+TEST_CASE(
+    "ray-aabb: the picture — the box, the current slab's planes, the points, the segment inside",
+    "[accel][ray-aabb]") {
     auto s = RayAabb::start(ray({0, 0, 0}, {4, 2, 2}, {-2, 0, 0.5}, {2, 1, 0.5}));
     RayAabb::step(s, nullptr);  // axis x
     cg::Scene scene;
@@ -516,7 +560,7 @@ TEST_CASE("ray-aabb: the picture — the box, the current slab's planes, the poi
             inside = g.a == dvec3(0, 1, 1) && g.b == dvec3(2, 2, 1.5);
     CHECK(inside);
     for (const auto& f : scene.faces3) CHECK(f.style.role != cg::Role::Active);  // no slab now
-    CHECK(scene.has_2d());  // the t strip
+    CHECK(scene.has_2d());                                                       // the t strip
 
     // Every step of every preset and of 3,000 random rays (tiny and huge included) draws only
     // finite coordinates.
@@ -547,7 +591,8 @@ TEST_CASE("ray-aabb: the picture — the box, the current slab's planes, the poi
     CHECK(drawn > 10'000);
 }
 
-TEST_CASE("ray-aabb: exam problems are hand-workable and cover the cases", "[accel][ray-aabb][exam]") {
+TEST_CASE("ray-aabb: exam problems are hand-workable and cover the cases",
+          "[accel][ray-aabb][exam]") {
     const cg::Algorithm& a = cg::test::algorithm("ray-aabb");
     int hit = 0, inside = 0, behind = 0, disjoint = 0, zero = 0, early = 0;
     for (std::uint64_t seed = 0; seed < 1000; ++seed) {
