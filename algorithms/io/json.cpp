@@ -146,6 +146,10 @@ Reader::Reader(const json& j, std::string path) : j_(j), path_(std::move(path)) 
                                     std::string("must be a JSON object, got ") + describe(j_));
 }
 
+std::string element(const std::string& base, std::size_t i) {
+    return base + "[" + std::to_string(i) + "]";
+}
+
 std::string Reader::field(const char* key) const {
     return path_.empty() ? std::string(key) : path_ + "." + key;
 }

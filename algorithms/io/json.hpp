@@ -62,6 +62,8 @@ private:
 double as_number(const json& v, const std::string& field);
 glm::dvec2 as_point2(const json& v, const std::string& field);
 glm::dvec3 as_point3(const json& v, const std::string& field);
+// The path of element i of the list at `base`: "objects[3]".
+std::string element(const std::string& base, std::size_t i);
 std::string describe(const json& v);  // "a string (\"abc\")", for error messages
 
 // Pretty-printed JSON that stays readable: objects one field per line, lists of numbers (points,
