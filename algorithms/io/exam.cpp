@@ -65,11 +65,11 @@ bool answer_matches(const json& expected, const json& given, double tolerance) {
 }
 
 namespace {
-std::string show(const json& v) {
+std::string show_expected(const json& v) {
     if (v.is_number()) return num(v.get<double>());
     if (v.is_array()) {
         std::string s = "[";
-        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + show(v[i]);
+        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + show_expected(v[i]);
         return s + "]";
     }
     return v.dump();
@@ -82,11 +82,11 @@ std::vector<FieldGrade> grade(const ExamProblem& p, const json& given, double to
         FieldGrade g{field, false, ""};
         const json& expected = p.expected.at(field);
         if (!given.is_object() || !given.contains(field)) {
-            g.why = "no answer given; expected " + show(expected);
+            g.why = "no answer given; expected " + show_expected(expected);
         } else if (answer_matches(expected, given.at(field), tolerance)) {
             g.correct = true;
         } else {
-            g.why = "expected " + show(expected) + ", got " + show(given.at(field));
+            g.why = "expected " + show_expected(expected) + ", got " + show_expected(given.at(field));
         }
         grades.push_back(g);
     }

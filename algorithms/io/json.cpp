@@ -4,6 +4,10 @@
 #include <cstdint>
 #include <limits>
 
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
 #include "core/format.hpp"
 
 namespace cg {
@@ -142,6 +146,10 @@ Reader::Reader(const json& j, std::string path) : j_(j), path_(std::move(path)) 
                                     std::string("must be a JSON object, got ") + describe(j_));
 }
 
+std::string element(const std::string& base, std::size_t i) {
+    return base + "[" + std::to_string(i) + "]";
+}
+
 std::string Reader::field(const char* key) const {
     return path_.empty() ? std::string(key) : path_ + "." + key;
 }
@@ -186,6 +194,16 @@ std::string Reader::string(const char* key) const {
 
 glm::dvec2 Reader::point2(const char* key) const { return as_point2(get(key), field(key)); }
 glm::dvec3 Reader::point3(const char* key) const { return as_point3(get(key), field(key)); }
+
+glm::dquat Reader::quat(const char* key) const {
+    const json& v = get(key);
+    const std::string f = field(key);
+    if (!v.is_array() || v.size() != 4)
+        throw InputError(f, "must be a quaternion [w, x, y, z], got " + describe(v));
+    double c[4];
+    for (int i = 0; i < 4; ++i) c[i] = as_number(v[i], f + "[" + std::to_string(i) + "]");
+    return {c[0], c[1], c[2], c[3]};  // glm's constructor takes (w, x, y, z)
+}
 
 std::vector<glm::dvec2> Reader::points2(const char* key) const {
     const json& v = get(key);
@@ -273,9 +291,29 @@ json nice_number(double x) {
 }
 json nice_point(glm::dvec2 p) { return json::array({nice_number(p.x), nice_number(p.y)}); }
 json nice_point(glm::dvec3 p) { return json::array({nice_number(p.x), nice_number(p.y), nice_number(p.z)}); }
+json nice_quat(const glm::dquat& q) {
+    return json::array({nice_number(q.w), nice_number(q.x), nice_number(q.y), nice_number(q.z)});
+}
+
+namespace {
+template <int N>
+json matrix_rows_of(const glm::mat<N, N, double, glm::defaultp>& m, bool nice) {
+    json j = json::array();
+    for (int r = 0; r < N; ++r) {
+        json row = json::array();
+        for (int c = 0; c < N; ++c) row.push_back(nice ? nice_number(m[c][r]) : json(m[c][r]));
+        j.push_back(std::move(row));
+    }
+    return j;
+}
+}  // namespace
+
+json matrix_rows(const glm::dmat3& m, bool nice) { return matrix_rows_of(m, nice); }
+json matrix_rows(const glm::dmat4& m, bool nice) { return matrix_rows_of(m, nice); }
 
 json to_json(glm::dvec2 p) { return json::array({p.x, p.y}); }
 json to_json(glm::dvec3 p) { return json::array({p.x, p.y, p.z}); }
+json quat_json(const glm::dquat& q) { return json::array({q.w, q.x, q.y, q.z}); }
 
 json to_json(const Value& v) {
     struct Visitor {

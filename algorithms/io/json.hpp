@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/fwd.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
@@ -43,6 +44,7 @@ public:
     glm::dvec3 point3(const char* key) const;
     std::vector<glm::dvec2> points2(const char* key) const;
     std::vector<glm::dvec3> points3(const char* key) const;
+    glm::dquat quat(const char* key) const;  // [w, x, y, z], any quaternion
     Reader object(const char* key) const;
 
     // Refuses any field not in `allowed`.
@@ -60,6 +62,8 @@ private:
 double as_number(const json& v, const std::string& field);
 glm::dvec2 as_point2(const json& v, const std::string& field);
 glm::dvec3 as_point3(const json& v, const std::string& field);
+// The path of element i of the list at `base`: "objects[3]".
+std::string element(const std::string& base, std::size_t i);
 std::string describe(const json& v);  // "a string (\"abc\")", for error messages
 
 // Pretty-printed JSON that stays readable: objects one field per line, lists of numbers (points,
@@ -69,10 +73,16 @@ std::string pretty(const json& j, int indent = 2);
 json nice_number(double x);
 json nice_point(glm::dvec2 p);
 json nice_point(glm::dvec3 p);
+json nice_quat(const glm::dquat& q);  // [w, x, y, z]
+// A matrix as the list of its rows (glm stores m[column][row]); `nice` writes the entries with
+// nice_number, for input files.
+json matrix_rows(const glm::dmat3& m, bool nice = false);
+json matrix_rows(const glm::dmat4& m, bool nice = false);
 
 json to_json(const Value& v);
 json to_json(glm::dvec2 p);
 json to_json(glm::dvec3 p);
+json quat_json(const glm::dquat& q);  // [w, x, y, z]
 // One line of a trace: {"index", "event", "line", "narration", "math", "variables"}.
 json step_to_json(std::size_t index, const StepInfo& info);
 

@@ -12,6 +12,7 @@
 #include "io/registry.hpp"
 #include "rays/csg_json.hpp"
 #include "rays/csg_ray.hpp"
+#include "rays/rays_json.hpp"
 
 namespace cg {
 
@@ -25,10 +26,6 @@ json spans_json(const CsgSpans& spans) {
     json out = json::array();
     for (const CsgSpan& s : spans) out.push_back(json::array({end_json(s.in.t), end_json(s.out.t)}));
     return out;
-}
-
-json point_or_null(bool has, glm::dvec3 p) {
-    return has ? to_json(p) : json(nullptr);
 }
 
 }  // namespace
@@ -70,8 +67,8 @@ struct JsonIo<CsgRay> {
         }
         return json{{"hit", h.hit},
                     {"t", h.hit ? json(h.t) : json(nullptr)},
-                    {"point", point_or_null(h.hit, h.point)},
-                    {"normal", point_or_null(h.hit && h.has_normal, h.normal)},
+                    {"point", rays_json::point_or_null(h.hit, h.point)},
+                    {"normal", rays_json::point_or_null(h.hit && h.has_normal, h.normal)},
                     {"from", std::move(from)},
                     {"entering", h.hit ? json(h.entering) : json(nullptr)},
                     {"segments", spans_json(h.segments)},

@@ -16,10 +16,6 @@ namespace cg {
 
 namespace {
 
-json point_or_null(bool has, glm::dvec3 p) {
-    return has ? to_json(p) : json(nullptr);
-}
-
 Quadric quadric_from(const Reader& r) {
     r.only({"type", "params", "transform", "zmin", "zmax"});
     return rays_json::quadric(r);
@@ -51,8 +47,8 @@ struct JsonIo<RayQuadric> {
         return json{{"hit", r.hit},
                     {"roots", std::move(roots)},
                     {"t", r.hit ? json(r.t) : json(nullptr)},
-                    {"point", point_or_null(r.hit, r.point)},
-                    {"normal", point_or_null(r.has_normal, r.normal)}};
+                    {"point", rays_json::point_or_null(r.hit, r.point)},
+                    {"normal", rays_json::point_or_null(r.has_normal, r.normal)}};
     }
 
     static json example() {

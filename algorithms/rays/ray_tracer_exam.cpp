@@ -2,9 +2,9 @@
 // question: one eye ray into a sphere lit by a point light. Three in ten instead take the same
 // scene into distribution ray tracing (some of: several samples per pixel, a thin lens, a
 // shutter time with the ball moving, an area light, a glossy ball) and ask the other exam
-// question: what each effect spreads its rays over. The numbers are chosen to stay exact: the hit's offset
-// from the centre is a Pythagorean triple times r (so t, P and n are short decimals), the light
-// sits at P + k (a 3-4-5 direction) so l is exact too, and sometimes a second ball is placed
+// question: what each effect spreads its rays over. The numbers are chosen to stay exact: the hit's
+// offset from the centre is a Pythagorean triple times r (so t, P and n are short decimals), the
+// light sits at P + k (a 3-4-5 direction) so l is exact too, and sometimes a second ball is placed
 // on the shadow ray, or the surface is a mirror whose ray escapes to the background.
 #include <cmath>
 
@@ -96,9 +96,7 @@ RayTracer::Input traced_by_hand(Rng& rng) {
         }
         // Keep problems a student can finish by hand: the eye ray hits the ball where we aimed
         // (facing the light), and a mirror ray escapes.
-        RayTracer::State s = RayTracer::start(in);
-        while (!RayTracer::done(s)) RayTracer::step(s, nullptr);
-        const RayTracer::Result res = RayTracer::result(s);
+        const RayTracer::Result res = run_to_end<RayTracer>(RayTracer::start(in));
         const RayTracer::RayNode& primary = res.tree.front();
         if (primary.hit.object != 0 || glm::length(primary.hit.point - P) > 1e-9) continue;
         bool escapes = true;
@@ -112,14 +110,20 @@ RayTracer::Input traced_by_hand(Rng& rng) {
     }
 }
 
-// The same scene, distributed: the pixel at the centre of a 9 × 9 image looks straight down at
-// the hit, and each effect is on with even odds (one at least).
+// The pixel at the centre of a 9 × 9 image instead of the given ray: it looks straight down at
+// the hit.
+void centre_pixel(RayTracer::Input& in) {
+    in.explicit_ray = false;
+    in.scene.camera.width = in.scene.camera.height = 9;
+    in.scene.camera.fov_y_deg = 30;
+    in.pixel = {4.5, 4.5};
+}
+
+// The same scene, distributed, seen through the centre pixel; each effect is on with even odds
+// (one at least).
 void spread(RayTracer::Input& in, Rng& rng) {
     rt::Scene& sc = in.scene;
-    in.explicit_ray = false;
-    sc.camera.width = sc.camera.height = 9;
-    sc.camera.fov_y_deg = 30;
-    in.pixel = {4.5, 4.5};
+    centre_pixel(in);
     sc.settings.seed = static_cast<std::uint64_t>(rng.integer(1, 999));
     bool on[5];
     for (bool& b : on) b = rng.chance(0.5);
@@ -131,7 +135,8 @@ void spread(RayTracer::Input& in, Rng& rng) {
     }
     if (on[2]) {
         sc.camera.shutter = pick(rng, {0.5, 1});
-        sc.objects[0].velocity = rng.chance(0.5) ? dvec3(pick(rng, {0.5, 1}), 0, 0) : dvec3(0, pick(rng, {0.5, 1}), 0);
+        sc.objects[0].velocity =
+            rng.chance(0.5) ? dvec3(pick(rng, {0.5, 1}), 0, 0) : dvec3(0, pick(rng, {0.5, 1}), 0);
     }
     if (on[3]) {
         rt::Light& L = sc.lights[0];
@@ -164,19 +169,14 @@ void distribute(RayTracer::Input& in, Rng& rng) {
         spread(d, rng);
         if (attempt == 20) {  // a ball at the rim of the view: soft shadows only
             d = in;
-            d.explicit_ray = false;
-            d.scene.camera.width = d.scene.camera.height = 9;
-            d.scene.camera.fov_y_deg = 30;
-            d.pixel = {4.5, 4.5};
+            centre_pixel(d);
             rt::Light& L = d.scene.lights[0];
             L.area = rt::Light::Area::Disc;
             L.radius = 0.5;
             L.normal = {0, -1, 0};
             L.samples = 4;
         }
-        RayTracer::State s = RayTracer::start(d);
-        while (!RayTracer::done(s)) RayTracer::step(s, nullptr);
-        const RayTracer::Result res = RayTracer::result(s);
+        const RayTracer::Result res = run_to_end<RayTracer>(RayTracer::start(d));
         const rt::Distribution want = rt::distribution(d.scene);
         bool all_hit = true, area = false, glossy = false;
         for (const RayTracer::RayNode& n : res.tree) {
@@ -210,7 +210,8 @@ std::string distribution_question(const RayTracer::Input& in) {
     const rt::Object& ball = sc.objects[0];
     std::string q = "A ball of radius " + num(ball.quadric.r) + " centred at " +
                     num(dvec3(ball.quadric.world_from_model[3])) + ", seen from " +
-                    num(sc.camera.eye) + " looking down −z, is rendered by distribution ray tracing:";
+                    num(sc.camera.eye) +
+                    " looking down −z, is rendered by distribution ray tracing:";
     if (d.anti_aliasing)
         q += " " + std::to_string(sc.settings.samples_per_pixel) + " jittered samples per pixel;";
     if (d.depth_of_field)

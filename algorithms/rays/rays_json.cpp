@@ -111,4 +111,8 @@ json quadric_json(const Quadric& q) {
     return j;
 }
 
+json point_or_null(bool has, glm::dvec3 p) {
+    return has ? to_json(p) : json(nullptr);
+}
+
 }  // namespace cg::rays_json

@@ -21,6 +21,9 @@ namespace cg::rays_json {
 glm::dvec3 color(const Reader& r, const char* key, bool& rgb);
 json color_json(const glm::dvec3& c, bool rgb, bool nice);
 
+// A point, or null when there is none (a miss).
+json point_or_null(bool has, glm::dvec3 p);
+
 glm::dmat4 matrix4(const Reader& r, const char* key);
 json matrix4_json(const glm::dmat4& m);
 

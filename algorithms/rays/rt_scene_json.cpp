@@ -26,10 +26,6 @@ const json& list(const Reader& r, const char* key, const char* what) {
     return v;
 }
 
-std::string at(const std::string& base, std::size_t i) {
-    return base + "[" + std::to_string(i) + "]";
-}
-
 bool optional_bool(const Reader& r, const char* key, bool fallback) {
     return r.has(key) ? r.boolean(key) : fallback;
 }
@@ -230,7 +226,7 @@ int material_index(const Reader& r, const std::vector<Material>& materials) {
 void objects_from(const Reader& r, const std::vector<Material>& materials, Scene& s) {
     const json& v = list(r, "objects", "objects");
     for (std::size_t i = 0; i < v.size(); ++i) {
-        const Reader o(v[i], at("objects", i));
+        const Reader o(v[i], element("objects", i));
         Object obj;
         obj.field = o.path();
         const std::string type = o.string("type");
@@ -279,7 +275,7 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
                                      std::to_string(s.objects.size() + tris.size()) +
                                      " objects; the limit is " + std::to_string(kMaxObjects));
             for (std::size_t t = 0; t < tris.size(); ++t) {
-                const std::string tf = at(o.field("triangles"), t);
+                const std::string tf = element(o.field("triangles"), t);
                 const json& ix = tris[t];
                 if (!ix.is_array() || ix.size() != 3)
                     throw InputError(tf,
@@ -292,7 +288,7 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
                 for (int k = 0; k < 3; ++k) {
                     if (!ix[k].is_number_integer() || ix[k].get<long long>() < 0 ||
                         ix[k].get<long long>() >= static_cast<long long>(p.size()))
-                        throw InputError(at(tf, k), "must be a vertex index from 0 to " +
+                        throw InputError(element(tf, k), "must be a vertex index from 0 to " +
                                                         std::to_string(p.size() - 1) + ", got " +
                                                         describe(ix[k]));
                     *corner[k] = p[ix[k].get<std::size_t>()];
@@ -348,10 +344,10 @@ Scene scene_from_json(const json& j, std::initializer_list<const char*> allow) {
     const json& mats = list(r, "materials", "materials");
     if (mats.empty()) throw InputError("materials", "must list at least one material");
     for (std::size_t i = 0; i < mats.size(); ++i) {
-        s.materials.push_back(material_from(Reader(mats[i], at("materials", i))));
+        s.materials.push_back(material_from(Reader(mats[i], element("materials", i))));
         for (std::size_t k = 0; k < i; ++k)
             if (s.materials[k].name == s.materials[i].name)
-                throw InputError(at("materials", i) + ".name",
+                throw InputError(element("materials", i) + ".name",
                                  "\"" + s.materials[i].name + "\" names two materials");
     }
     if (r.has("lights")) {
@@ -360,7 +356,7 @@ Scene scene_from_json(const json& j, std::initializer_list<const char*> allow) {
             throw InputError("lights", "has " + std::to_string(lights.size()) +
                                            " lights; the limit is " + std::to_string(kMaxLights));
         for (std::size_t i = 0; i < lights.size(); ++i)
-            s.lights.push_back(light_from(Reader(lights[i], at("lights", i))));
+            s.lights.push_back(light_from(Reader(lights[i], element("lights", i))));
     }
     objects_from(r, s.materials, s);
     return s;

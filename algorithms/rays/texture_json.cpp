@@ -18,10 +18,6 @@ using glm::dvec3;
 
 namespace {
 
-std::string at(const std::string& base, std::size_t i) {
-    return base + "[" + std::to_string(i) + "]";
-}
-
 TexColor colour_value(const json& v, const std::string& field) {
     if (v.is_number()) return TexColor(as_number(v, field));
     if (v.is_array() && v.size() == 3) return as_point3(v, field);
@@ -109,14 +105,14 @@ void image_source(const Reader& r, Texture& t) {
         t.image.height = h;
         t.image.texels.resize(static_cast<std::size_t>(w) * h);
         for (int row = 0; row < h; ++row) {
-            const std::string rf = at(g.field("texels"), row);
+            const std::string rf = element(g.field("texels"), row);
             const json& rv = rows[row];
             if (!rv.is_array() || rv.size() != static_cast<std::size_t>(w))
                 throw InputError(rf, "must be a row of " + std::to_string(w) +
                                          " colours (the width), got " + describe(rv));
             for (int i = 0; i < w; ++i)  // the first row is the top: v = 1
                 t.image.texels[static_cast<std::size_t>(h - 1 - row) * w + i] =
-                    colour_value(rv[i], at(rf, i));
+                    colour_value(rv[i], element(rf, i));
         }
     } else {
         const Reader c = r.object("checker");
@@ -129,9 +125,9 @@ void image_source(const Reader& r, Texture& t) {
                     throw InputError(c.field("size"),
                                      "must be n or [n_u, n_v], got " + describe(v));
                 for (int k = 0; k < 2; ++k) {
-                    const double x = as_number(v[k], at(c.field("size"), k));
+                    const double x = as_number(v[k], element(c.field("size"), k));
                     if (x != std::floor(x) || x < 1 || x > kMaxTextureSide)
-                        throw InputError(at(c.field("size"), k),
+                        throw InputError(element(c.field("size"), k),
                                          "must be a whole number of squares from 1 to 4096");
                     n[k] = static_cast<int>(x);
                 }
@@ -145,7 +141,7 @@ void image_source(const Reader& r, Texture& t) {
             if (!v.is_array() || v.size() != 2)
                 throw InputError(c.field("colors"),
                                  "must be two colours [c0, c1], got " + describe(v));
-            for (int k = 0; k < 2; ++k) colors[k] = colour_value(v[k], at(c.field("colors"), k));
+            for (int k = 0; k < 2; ++k) colors[k] = colour_value(v[k], element(c.field("colors"), k));
         }
         if (static_cast<long long>(n.x) * n.y > kMaxTexels)
             throw InputError(c.field("size"), "makes more than 2048 × 2048 squares");
@@ -324,7 +320,7 @@ SolidTexture solid(const Reader& r, std::initializer_list<const char*> extra) {
         const json& v = r.get("colors");
         if (!v.is_array() || v.size() != 2)
             throw InputError(r.field("colors"), "must be two colours [c0, c1], got " + describe(v));
-        for (int k = 0; k < 2; ++k) t.colors[k] = colour_value(v[k], at(r.field("colors"), k));
+        for (int k = 0; k < 2; ++k) t.colors[k] = colour_value(v[k], element(r.field("colors"), k));
     }
     if (r.has("size")) t.size = r.number("size");
     if (r.has("axis")) t.axis = r.point3("axis");

@@ -14,7 +14,8 @@ namespace cg {
 
 namespace {
 
-json rows(const glm::dmat4& m) {
+// The matrix's rows with −0 written as 0 (the frames' zeros come out of products as −0).
+json rows_signless_zero(const glm::dmat4& m) {
     json j = json::array();
     for (int r = 0; r < 4; ++r)
         j.push_back({m[0][r] + 0.0, m[1][r] + 0.0, m[2][r] + 0.0, m[3][r] + 0.0});
@@ -74,14 +75,14 @@ struct JsonIo<ChangeOfBasis> {
     }
 
     static json result(const ChangeOfBasis::Result& r) {
-        return json{{"matrix", rows(r.matrix)},
+        return json{{"matrix", rows_signless_zero(r.matrix)},
                     {"points", points(r.points)},
                     {"vectors", points(r.vectors)},
                     {"world", points(r.world)},
                     {"orthonormal_to", r.orthonormal_to},
-                    {"world_from_f1", rows(r.world_from_f1)},
-                    {"world_from_f2", rows(r.world_from_f2)},
-                    {"f2_from_world", rows(r.f2_from_world)}};
+                    {"world_from_f1", rows_signless_zero(r.world_from_f1)},
+                    {"world_from_f2", rows_signless_zero(r.world_from_f2)},
+                    {"f2_from_world", rows_signless_zero(r.f2_from_world)}};
     }
 
     static json example() {

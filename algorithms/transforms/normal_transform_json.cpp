@@ -10,12 +10,6 @@ namespace cg {
 
 namespace {
 
-json rows(const glm::dmat3& m) {
-    json j = json::array();
-    for (int r = 0; r < 3; ++r) j.push_back({m[0][r], m[1][r], m[2][r]});
-    return j;
-}
-
 glm::dmat3 read_linear(const json& v) {
     if (!v.is_array() || (v.size() != 3 && v.size() != 4))
         throw InputError("matrix", "must be a 3×3 matrix (3 rows) or an affine 4×4 (4 rows), got " +
@@ -73,7 +67,7 @@ struct JsonIo<NormalTransform> {
                     {"naive_normal", to_json(r.naive)},
                     {"naive_cos", {r.naive_cos[0], r.naive_cos[1]}},
                     {"naive_ok", r.naive_ok},
-                    {"inverse_transpose", rows(r.inverse_transpose)},
+                    {"inverse_transpose", matrix_rows(r.inverse_transpose)},
                     {"normal", to_json(r.normal)},
                     {"unit_normal", to_json(r.unit_normal)},
                     {"cos", {r.cos[0], r.cos[1]}}};

@@ -19,12 +19,6 @@ namespace cg {
 
 namespace {
 
-json rows(const glm::dmat4& m) {  // glm is m[column][row]
-    json j = json::array();
-    for (int r = 0; r < 4; ++r) j.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
-    return j;
-}
-
 json vec4_json(const glm::dvec4& v) { return json{v.x, v.y, v.z, v.w}; }
 
 glm::dmat4 read_matrix4(const json& v, const std::string& field) {
@@ -168,8 +162,8 @@ struct JsonIo<Perspective> {
             device.push_back(d ? to_json(*d) : json(nullptr));
             any_device = any_device || d.has_value();
         }
-        json j{{"matrix", rows(r.projection)}, {"view_matrix", rows(r.view)},
-               {"model_matrix", rows(r.model)}, {"mvp", rows(r.mvp)},
+        json j{{"matrix", matrix_rows(r.projection)}, {"view_matrix", matrix_rows(r.view)},
+               {"model_matrix", matrix_rows(r.model)}, {"mvp", matrix_rows(r.mvp)},
                {"world", std::move(world)},     {"view", std::move(view)},
                {"clip", std::move(clip)},       {"ndc", std::move(ndc)},
                {"inside", std::move(inside)}};

@@ -22,16 +22,6 @@ namespace {
 
 using Op = Quaternion::Op;
 
-glm::dquat quat(const Reader& r, const char* key) {
-    const json& v = r.get(key);
-    const std::string field = r.field(key);
-    if (!v.is_array() || v.size() != 4)
-        throw InputError(field, "must be a quaternion [w, x, y, z], got " + describe(v));
-    double c[4];
-    for (int i = 0; i < 4; ++i) c[i] = as_number(v[i], field + "[" + std::to_string(i) + "]");
-    return {c[0], c[1], c[2], c[3]};  // glm's constructor takes (w, x, y, z)
-}
-
 glm::dmat3 matrix3(const Reader& r, const char* key) {
     const json& v = r.get(key);
     const std::string field = r.field(key);
@@ -48,18 +38,6 @@ glm::dmat3 matrix3(const Reader& r, const char* key) {
     return m;
 }
 
-json quat_json(const glm::dquat& q) {
-    return json::array({q.w, q.x, q.y, q.z});
-}
-json nice_quat(const glm::dquat& q) {
-    return json::array({nice_number(q.w), nice_number(q.x), nice_number(q.y), nice_number(q.z)});
-}
-json nice_rows(const glm::dmat3& m) {
-    json j = json::array();
-    for (int r = 0; r < 3; ++r)
-        j.push_back({nice_number(m[0][r]), nice_number(m[1][r]), nice_number(m[2][r])});
-    return j;
-}
 
 template <class T, class F>
 json or_null(const std::optional<T>& v, F&& f) {
@@ -77,18 +55,18 @@ struct JsonIo<Quaternion> {
         if (op == "multiply") {
             r.only({"op", "q1", "q2"});
             in.op = Op::Multiply;
-            in.q1 = quat(r, "q1");
-            in.q2 = quat(r, "q2");
+            in.q1 = r.quat("q1");
+            in.q2 = r.quat("q2");
         } else if (op == "conjugate" || op == "inverse" || op == "to_matrix") {
             r.only({"op", "q"});
             in.op = op == "conjugate" ? Op::Conjugate
                     : op == "inverse" ? Op::Inverse
                                       : Op::ToMatrix;
-            in.q = quat(r, "q");
+            in.q = r.quat("q");
         } else if (op == "rotate") {
             r.only({"op", "q", "point"});
             in.op = Op::Rotate;
-            in.q = quat(r, "q");
+            in.q = r.quat("q");
             in.point = r.point3("point");
         } else if (op == "from_axis_angle") {
             r.only({"op", "axis", "angle_deg"});
@@ -129,7 +107,7 @@ struct JsonIo<Quaternion> {
                 j["angle_deg"] = nice_number(in.angle_deg);
                 break;
             case Op::FromMatrix:
-                j["matrix"] = nice_rows(in.matrix);
+                j["matrix"] = matrix_rows(in.matrix, true);
                 break;
         }
         return j;

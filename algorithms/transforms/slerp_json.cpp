@@ -10,22 +10,6 @@ namespace cg {
 
 namespace {
 
-glm::dquat quat(const Reader& r, const char* key) {
-    const json& v = r.get(key);
-    const std::string field = r.field(key);
-    if (!v.is_array() || v.size() != 4)
-        throw InputError(field, "must be a quaternion [w, x, y, z], got " + describe(v));
-    double c[4];
-    for (int i = 0; i < 4; ++i) c[i] = as_number(v[i], field + "[" + std::to_string(i) + "]");
-    return {c[0], c[1], c[2], c[3]};  // glm's constructor takes (w, x, y, z)
-}
-
-json quat_json(const glm::dquat& q) {
-    return json::array({q.w, q.x, q.y, q.z});
-}
-json nice_quat(const glm::dquat& q) {
-    return json::array({nice_number(q.w), nice_number(q.x), nice_number(q.y), nice_number(q.z)});
-}
 
 }  // namespace
 
@@ -35,8 +19,8 @@ struct JsonIo<Slerp> {
         Reader r(j);
         r.only({"q0", "q1", "u"});
         Slerp::Input in;
-        in.q0 = quat(r, "q0");
-        in.q1 = quat(r, "q1");
+        in.q0 = r.quat("q0");
+        in.q1 = r.quat("q1");
         in.u = r.number("u");
         return in;
     }

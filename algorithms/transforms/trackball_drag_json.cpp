@@ -12,13 +12,6 @@ namespace cg {
 
 namespace {
 
-json quat_json(const glm::dquat& q) { return json{q.w, q.x, q.y, q.z}; }
-
-json rows(const glm::dmat3& m) {  // glm is m[column][row]
-    json j = json::array();
-    for (int r = 0; r < 3; ++r) j.push_back({m[0][r], m[1][r], m[2][r]});
-    return j;
-}
 
 template <class A>
 typename A::Input drag_input(const json& j) {
@@ -54,7 +47,7 @@ json drag_result(const typename A::Result& r) {
     for (const auto& p : r.pairs)
         pairs.push_back(json{{"axis", to_json(p.axis)}, {"angle_deg", p.angle_deg}, {"rim", p.rim}});
     json j{{"rotation", quat_json(r.rotation)},
-           {"matrix", rows(r.matrix)},
+           {"matrix", matrix_rows(r.matrix)},
            {"pairs", std::move(pairs)},
            {"direct", quat_json(r.direct)},
            {"path_gap_deg", r.path_gap_deg},

@@ -83,12 +83,6 @@ json rect_json(const WindowViewport::Rect& r) {
                 {"xmax", nice_number(r.xmax)}, {"ymax", nice_number(r.ymax)}};
 }
 
-json rows(const glm::dmat3& m) {  // glm is m[column][row]
-    json j = json::array();
-    for (int r = 0; r < 3; ++r) j.push_back({m[0][r], m[1][r], m[2][r]});
-    return j;
-}
-
 json points(const std::vector<glm::dvec2>& ps) {
     json j = json::array();
     for (const glm::dvec2& p : ps) j.push_back(to_json(p));
@@ -120,9 +114,9 @@ struct JsonIo<WindowViewport> {
     static json result(const WindowViewport::Result& r) {
         return json{{"ndc", points(r.ndc)},
                     {"device", points(r.device)},
-                    {"matrix", rows(r.device_from_window)},
-                    {"window_to_ndc", rows(r.ndc_from_window)},
-                    {"ndc_to_device", rows(r.device_from_ndc)},
+                    {"matrix", matrix_rows(r.device_from_window)},
+                    {"window_to_ndc", matrix_rows(r.ndc_from_window)},
+                    {"ndc_to_device", matrix_rows(r.device_from_ndc)},
                     {"distorted", r.distorted},
                     {"aspect_window", r.aspect_window},
                     {"aspect_viewport", r.aspect_viewport}};

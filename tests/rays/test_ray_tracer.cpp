@@ -21,6 +21,7 @@
 #include "rays/tracer_reference.hpp"
 #include "rays/tracer_support.hpp"
 #include "support/process.hpp"
+#include "support/registry_run.hpp"
 #include "support/replay.hpp"
 
 using cg::RayTracer;
@@ -776,9 +777,7 @@ TEST_CASE("ray-tracer: distribution exam problems — what each effect's rays ar
         std::sort(answers.begin(), answers.end());
         CHECK(answers == fields);
         // The trace spreads the rays as the answer says.
-        auto run = a.create(in);
-        while (!run->done()) run->step(nullptr);
-        const cg::json result = a.result(*run);
+        const cg::json result = cg::test::result_of("ray-tracer", in);
         int primaries = 0, area_shadows = 0, glossy = 0;
         std::set<double> times;
         bool off_axis_origin = false;
