@@ -175,7 +175,12 @@ Supersampling::State Supersampling::start(const Input& in) {
     s.radius = radius_of(in);
     if (in.is_study) {
         s.phase = s.last = Phase::Point;
-        s.study.reserve(in.study.patterns.size() * in.study.samples.size());
+        std::vector<StudyPoint> measured;
+        measured.reserve(in.study.patterns.size() * in.study.samples.size());
+        for (Pattern p : in.study.patterns)
+            for (int n : in.study.samples) measured.push_back({p, n, study_rms(in, p, n)});
+        s.study.reserve(measured.size());
+        s.measured = Shared<std::vector<StudyPoint>>(std::move(measured));
     }
     return s;
 }
@@ -657,11 +662,8 @@ void Supersampling::advance_study(State& s) {
     const Study& st = s.in->study;
     s.last = s.phase;
     if (s.phase == Phase::Point) {  // One point: a pattern's RMS error at one N
-        const std::size_t k = s.study.size(), m = st.samples.size();
-        const Pattern p = st.patterns[k / m];
-        const int n = st.samples[k % m];
-        s.study.push_back({p, n, study_rms(*s.in, p, n)});
-        if (s.study.size() == st.patterns.size() * m) s.phase = Phase::Slopes;
+        s.study.push_back((*s.measured)[s.study.size()]);
+        if (s.study.size() == st.patterns.size() * st.samples.size()) s.phase = Phase::Slopes;
     } else if (s.phase == Phase::Slopes) {  // The slopes, fitted
         for (Pattern p : st.patterns) s.slopes.push_back({p, study_slope(s.study, p)});
         s.phase = Phase::Done;

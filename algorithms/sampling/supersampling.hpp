@@ -111,8 +111,11 @@ struct Supersampling {
         std::vector<glm::dvec2> covered;
         double covered_integral = 0;  // ∫∫ w over the covered part
         double exact = 0;
-        std::vector<StudyPoint> study;  // a study: the points measured so far
+        std::vector<StudyPoint> study;  // a study: the points shown so far
         std::vector<Slope> slopes;      // a study: after the last step
+        // A study's points, all measured in start (0.1 s for the lesson's studies): each step
+        // then shows one, so that a step stays instant (one point is 400 × N supersamples).
+        Shared<std::vector<StudyPoint>> measured;
         bool operator==(const State&) const = default;
     };
 
