@@ -244,14 +244,13 @@ void make_node(const Bvh::Input& in, const std::vector<Bounds>& boxes, const Bvh
 // ---- [trace] --------------------------------------------------------------------------------
 
 // Pops one node and works it: the slab test, the prune, a leaf's primitives or the push of the
-// children. `tested` (when not null) gets each tested primitive's t.
+// children.
 struct PopOutcome {
     Visit visit = Visit::None;
     double t_enter = 0, t_exit = 0;
 };
 
-PopOutcome pop_node(const Bvh::Input& in, Bvh::Result& r, std::vector<int>& stack,
-                    std::vector<double>* tested) {
+PopOutcome pop_node(const Bvh::Input& in, Bvh::Result& r, std::vector<int>& stack) {
     PopOutcome out;
     const int id = stack.back();
     stack.pop_back();
@@ -287,7 +286,6 @@ PopOutcome pop_node(const Bvh::Input& in, Bvh::Result& r, std::vector<int>& stac
         const int i = r.order[nd.first + k];
         const PrimitiveHit h = intersect(in.primitives[i], in.origin, in.direction);
         ++r.primitive_tests;
-        if (tested) tested->push_back(h.t);
         if (h.hit() && (h.t < r.hit.t || (h.t == r.hit.t && i < r.hit.primitive))) {
             r.hit.primitive = i;
             r.hit.t = h.t;
@@ -325,24 +323,28 @@ Bvh::Result Bvh::build_and_trace(const Input& in) {
     }
     if (!in.has_ray) return r;
     std::vector<int> stack{0};
-    while (!stack.empty()) pop_node(in, r, stack, nullptr);
+    while (!stack.empty()) pop_node(in, r, stack);
     finish_hit(in, r);
     return r;
 }
 
 Bvh::State Bvh::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+Bvh::State Bvh::begin(Shared<Input> in) {
     State s;
-    s.in = Shared<Input>(in);
-    s.boxes = Shared<std::vector<Bounds>>(primitive_bounds(in));
-    begin_result(in, s.r);
-    s.jobs.push_back({0, static_cast<int>(in.primitives.size()), 0, -1, false});
+    s.in = std::move(in);
+    s.boxes = Shared<std::vector<Bounds>>(primitive_bounds(*s.in));
+    begin_result(*s.in, s.r);
+    s.jobs.push_back({0, static_cast<int>(s.in->primitives.size()), 0, -1, false});
     return s;
 }
 
 std::size_t Bvh::bytes(const State& s) {
     return heap_bytes(s.r.nodes) + heap_bytes(s.r.order) + heap_bytes(s.r.visited) +
-           heap_bytes(s.jobs) + heap_bytes(s.stack) + heap_bytes(s.tested) + heap_bytes(s.visits);
+           heap_bytes(s.jobs) + heap_bytes(s.stack) + heap_bytes(s.visits);
 }
 
 // ---- [step] ---------------------------------------------------------------------------------
@@ -366,8 +368,7 @@ void Bvh::step(State& s, StepInfo* info) {
         case Phase::Trace: {  // Pop one node: its slab test, prune, test or push
             s.node = s.stack.back();
             s.best_before = s.r.hit.primitive;
-            s.tested.clear();
-            const PopOutcome o = pop_node(in, s.r, s.stack, &s.tested);
+            const PopOutcome o = pop_node(in, s.r, s.stack);
             s.visit = o.visit, s.t_enter = o.t_enter, s.t_exit = o.t_exit;
             s.visits.push_back(o.visit);
             if (s.stack.empty()) s.phase = Phase::Report;
@@ -418,9 +419,11 @@ void narrate_build(const State& s, StepInfo& info) {
     const Node& nd = s.r.nodes[s.node];
     const int* items = s.r.order.data() + nd.first;
     const std::string name = "Node " + std::to_string(s.node);
+    std::vector<int> ascending(items, items + nd.count);
+    std::sort(ascending.begin(), ascending.end());
     std::string text = name + " (depth " + std::to_string(nd.depth) + ") holds " +
                        std::to_string(nd.count) + " primitive" + (nd.count == 1 ? "" : "s") + " " +
-                       list(items, nd.count) + "; its box is the union of theirs, " +
+                       list(ascending.data(), nd.count) + "; its box is the union of theirs, " +
                        box_text(nd.bounds) + ".";
     info.vars = {{"node", static_cast<long long>(s.node)},
                  {"depth", static_cast<long long>(nd.depth)},
@@ -566,17 +569,19 @@ void narrate_trace(const State& s, StepInfo& info) {
             info.event = found ? "leaf-hit" : "leaf-tested";
             info.line = kLineLeafTest;
             text += "hit, t ∈ [" + tn(s.t_enter) + ", " + tn(s.t_exit) + "]. A leaf: test";
+            std::vector<double> tested;
             for (int k = 0; k < nd.count; ++k) {
                 const int i = s.r.order[nd.first + k];
+                const double t = intersect(in.primitives[i], in.origin, in.direction).t;
                 text += (k ? "; " : " ") + std::string(kind_name(in.primitives[i].kind)) + " " +
-                        std::to_string(i) + ": " +
-                        (std::isinf(s.tested[k]) ? "missed" : "t = " + num(s.tested[k]));
+                        std::to_string(i) + ": " + (std::isinf(t) ? "missed" : "t = " + num(t));
+                tested.push_back(i);
             }
             text += found ? ". Primitive " + std::to_string(s.r.hit.primitive) +
                                 " is the closest hit so far: t_best = " + tn(s.r.hit.t) + "."
                           : ". No closer hit: t_best stays " + tn(s.r.hit.t) + ".";
             info.math = "t_{best} = " + tt(s.r.hit.t);
-            info.vars.push_back({"tested", std::vector<double>(s.tested)});
+            info.vars.push_back({"tested", std::move(tested)});
             break;
         }
         case Visit::None:
@@ -648,9 +653,10 @@ void Bvh::narrate(const State& s, StepInfo& info) {
 
 namespace {
 
-// Depth colours for the node boxes (0xRRGGBBAA): blue, purple, teal, olive, brown, …
-constexpr std::uint32_t kDepthColour[] = {0x2f6fd0ff, 0x8a4fc4ff, 0x1f9a8aff,
-                                          0x8c8c1fff, 0xb0603aff, 0x5a7d2aff};
+// Depth colours for the node boxes (0xRRGGBBAA): blue, purple, olive, brown, steel, plum —
+// none of them a role's colour (teal, magenta, orange, green and red mean something).
+constexpr std::uint32_t kDepthColour[] = {0x2f6fd0ff, 0x8a4fc4ff, 0x8c8c1fff,
+                                          0xb0603aff, 0x3a8fb0ff, 0x9a4a7aff};
 
 std::uint32_t depth_colour(int depth) {
     return kDepthColour[depth % 6];
@@ -677,7 +683,7 @@ void box_faces(const Bounds& b, Style style, float alpha, Scene& scene) {
         scene.faces3.push_back({{c(q[0]), c(q[1]), c(q[2]), c(q[3])}, style, alpha, true, true});
 }
 
-void draw_primitive(const Primitive& p, Style style, float alpha, Scene& scene) {
+void draw_primitive(const Primitive& p, Style style, float alpha, bool coarse, Scene& scene) {
     switch (p.kind) {
         case PrimitiveKind::Triangle:
             scene.faces3.push_back({{p.a, p.b, p.c}, style, alpha, true, true});
@@ -685,16 +691,28 @@ void draw_primitive(const Primitive& p, Style style, float alpha, Scene& scene) 
         case PrimitiveKind::Box:
             box_faces({p.a, p.b}, style, alpha, scene);
             break;
-        case PrimitiveKind::Sphere: {  // a UV sphere, 10 around × 5 rings, without outlines
-            constexpr int kAround = 10, kRings = 5;
-            constexpr double kPi = 3.14159265358979323846;
-            auto at = [&](int i, int j) {
-                const double th = kPi * j / kRings, ph = 2 * kPi * i / kAround;
-                return p.a + p.radius * dvec3(std::sin(th) * std::cos(ph), std::cos(th),
-                                              std::sin(th) * std::sin(ph));
+        case PrimitiveKind::Sphere: {  // a UV sphere, without outlines: 10 × 5 faces, or
+                                       // 6 × 3 in a scene of many
+            struct Unit {
+                int around, rings;
+                std::vector<dvec3> dirs;  // (rings + 1) × (around + 1) unit directions
             };
-            for (int j = 0; j < kRings; ++j)
-                for (int i = 0; i < kAround; ++i)
+            static const std::array<Unit, 2> units = [] {
+                std::array<Unit, 2> out{Unit{10, 5, {}}, Unit{6, 3, {}}};
+                constexpr double kPi = 3.14159265358979323846;
+                for (Unit& u : out)
+                    for (int j = 0; j <= u.rings; ++j)
+                        for (int i = 0; i <= u.around; ++i) {
+                            const double th = kPi * j / u.rings, ph = 2 * kPi * i / u.around;
+                            u.dirs.push_back({std::sin(th) * std::cos(ph), std::cos(th),
+                                              std::sin(th) * std::sin(ph)});
+                        }
+                return out;
+            }();
+            const Unit& u = units[coarse ? 1 : 0];
+            auto at = [&](int i, int j) { return p.a + p.radius * u.dirs[j * (u.around + 1) + i]; };
+            for (int j = 0; j < u.rings; ++j)
+                for (int i = 0; i < u.around; ++i)
                     scene.faces3.push_back(
                         {{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)},
                          style,
@@ -756,7 +774,7 @@ void Bvh::draw(const State& s, Scene& scene) {
         if (mark[i] == 1) role = Role::Active, alpha = 0.45f;
         if (mark[i] == 2) role = Role::Entering, alpha = 0.3f;
         if (tracing && i == r.hit.primitive) role = Role::Kept, alpha = 0.5f;
-        draw_primitive(p, {role, 1.0f}, alpha, scene);
+        draw_primitive(p, {role, 1.0f}, alpha, n > 16, scene);
         scene.labels3.push_back({centroid(p), std::to_string(i), {role}});
     }
 
@@ -837,12 +855,17 @@ void Bvh::draw(const State& s, Scene& scene) {
             role = s.last == Phase::Trace && (s.visit == Visit::Missed || s.visit == Visit::Pruned)
                        ? Role::Discarded
                        : Role::Active;
-        const std::uint32_t rgba = now || seen[id] ? 0u : depth_colour(nd.depth);
+        const std::uint32_t rgba = now || seen[id] || tracing ? 0u : depth_colour(nd.depth);
         scene.points.push_back({pos(nd), "", {role, 1.0f, false, rgba}, now ? 8.0f : 6.0f});
         std::string label = std::to_string(id);
         if (nd.leaf()) label += " " + list(r.order.data() + nd.first, nd.count);
         scene.labels.push_back({pos(nd) + dvec2(0, nd.leaf() ? -0.55 : 0.45), label, {role}});
     }
+    if (tracing && !r.nodes.empty())
+        scene.labels.push_back({dvec2(0, 1.2),
+                                "orange: popped now · teal: entered · red: missed or pruned · "
+                                "ringed magenta: on the stack",
+                                {Role::Neutral}});
     // The stack, waiting.
     if (tracing)
         for (int id : s.stack)

@@ -139,15 +139,15 @@ struct Bvh {
         // The last traversal step: its slab test and what it found.
         Visit visit = Visit::None;
         double t_enter = 0, t_exit = 0;
-        int best_before = -1;        // the best primitive before the step
-        std::vector<double> tested;  // per primitive of the popped leaf: its t (kInf: missed)
-        std::vector<Visit> visits;   // what each popped node gave (parallel to r.visited)
+        int best_before = -1;       // the best primitive before the step
+        std::vector<Visit> visits;  // what each popped node gave (parallel to r.visited)
         bool operator==(const State&) const = default;
     };
 
     static const Spec& spec();
     static void validate(const Input& in);
-    static State start(const Input& in);
+    static State start(const Input& in);   // validate, then begin
+    static State begin(Shared<Input> in);  // a fresh state for a valid input
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s) { return s.r; }
