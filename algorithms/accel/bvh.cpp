@@ -846,6 +846,15 @@ void Bvh::draw(const State& s, Scene& scene) {
             scene.segments.push_back(
                 {pos(r.nodes[nd.parent]), pos(nd), "", {Role::Construction, 1.0f}, false});
     }
+    // A light frame around the tree's area, so the view does not zoom in on a lone root.
+    int depth = 1;
+    for (const Node& nd : r.nodes) depth = std::max(depth, nd.depth);
+    const double w = static_cast<double>(in.primitives.size()), bottom = -1.5 * depth - 1.5;
+    scene.polygons.push_back({{{0, bottom}, {w, bottom}, {w, 2.7}, {0, 2.7}},
+                              {Role::Construction, 1.0f, true},
+                              true,
+                              false});
+    int leaves = 0;
     for (std::size_t id = 0; id < r.nodes.size(); ++id) {
         const Node& nd = r.nodes[id];
         const bool now = static_cast<int>(id) == focus;
@@ -857,15 +866,23 @@ void Bvh::draw(const State& s, Scene& scene) {
                        : Role::Active;
         const std::uint32_t rgba = now || seen[id] || tracing ? 0u : depth_colour(nd.depth);
         scene.points.push_back({pos(nd), "", {role, 1.0f, false, rgba}, now ? 8.0f : 6.0f});
-        std::string label = std::to_string(id);
-        if (nd.leaf()) label += " " + list(r.order.data() + nd.first, nd.count);
-        scene.labels.push_back({pos(nd) + dvec2(0, nd.leaf() ? -0.55 : 0.45), label, {role}});
+        scene.labels.push_back({pos(nd) + dvec2(0, 0.45), std::to_string(id), {role}});
+        if (nd.leaf()) {  // its primitives below it, every other leaf a row lower
+            std::vector<int> ids(r.order.begin() + nd.first, r.order.begin() + nd.first + nd.count);
+            std::sort(ids.begin(), ids.end());
+            scene.labels.push_back({pos(nd) + dvec2(0, leaves % 2 ? -1.1 : -0.55),
+                                    list(ids.data(), nd.count),
+                                    {role}});
+            ++leaves;
+        }
     }
-    if (tracing && !r.nodes.empty())
-        scene.labels.push_back({dvec2(0, 1.2),
-                                "orange: popped now · teal: entered · red: missed or pruned · "
-                                "ringed magenta: on the stack",
-                                {Role::Neutral}});
+    if (tracing && !r.nodes.empty()) {
+        const double x = 0.5 * r.nodes[0].count;
+        scene.labels.push_back(
+            {dvec2(x, 2.2), "orange: popped now · teal: entered", {Role::Neutral}});
+        scene.labels.push_back(
+            {dvec2(x, 1.3), "red: missed or pruned · magenta: on the stack", {Role::Neutral}});
+    }
     // The stack, waiting.
     if (tracing)
         for (int id : s.stack)
