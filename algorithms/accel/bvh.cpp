@@ -423,7 +423,9 @@ void narrate_build(const State& s, StepInfo& info) {
     std::sort(ascending.begin(), ascending.end());
     std::string text = name + " (depth " + std::to_string(nd.depth) + ") holds " +
                        std::to_string(nd.count) + " primitive" + (nd.count == 1 ? "" : "s") + " " +
-                       list(ascending.data(), nd.count) + "; its box is the union of theirs, " +
+                       list(ascending.data(), nd.count) +
+                       (nd.count == 1 ? "; its box is that primitive's bounds, "
+                                      : "; its box is the union of theirs, ") +
                        box_text(nd.bounds) + ".";
     info.vars = {{"node", static_cast<long long>(s.node)},
                  {"depth", static_cast<long long>(nd.depth)},
@@ -747,6 +749,13 @@ void Bvh::draw(const State& s, Scene& scene) {
     const Result& r = s.r;
     const bool tracing = s.last != Phase::Build && s.r.box_tests > 0;
     const int focus = s.node;
+
+    // Room for everything at once (the lists would otherwise grow a dozen times per picture).
+    std::size_t faces = 16;
+    for (const Primitive& p : in.primitives)
+        faces += p.kind == PrimitiveKind::Sphere ? 50 : p.kind == PrimitiveKind::Box ? 6 : 1;
+    scene.faces3.reserve(scene.faces3.size() + faces);
+    scene.segments3.reserve(scene.segments3.size() + 12 * r.nodes.size() + 16);
 
     // What each primitive is in this picture: in the node in hand (made, or the leaf under
     // test), or tested in an earlier step.
