@@ -783,6 +783,8 @@ void Bvh::draw(const State& s, Scene& scene) {
         if (mark[i] == 1) role = Role::Active, alpha = 0.45f;
         if (mark[i] == 2) role = Role::Entering, alpha = 0.3f;
         if (tracing && i == r.hit.primitive) role = Role::Kept, alpha = 0.5f;
+        if (p.kind == PrimitiveKind::Box)
+            alpha *= 0.4f;  // six faces: lighter, not to hide the rest
         draw_primitive(p, {role, 1.0f}, alpha, n > 16, scene);
         scene.labels3.push_back({centroid(p), std::to_string(i), {role}});
     }
