@@ -157,7 +157,7 @@ struct Bvh {
 
     static Input exam_input(Rng& rng);
     static std::string question(const Input& in);
-    static std::vector<std::string> answer_fields();
+    static std::vector<std::string> answer_fields(const Input& in);
 
     // Build and trace in one call (the same numbers, no narration), for the benchmark; `in`
     // must be valid (validate).

@@ -54,26 +54,47 @@ Bvh::Input Bvh::exam_input(Rng& rng) {
 
 std::string Bvh::question(const Input& in) {
     std::string list;
-    for (std::size_t i = 0; i < in.primitives.size(); ++i)
+    bool spheres = true;
+    for (std::size_t i = 0; i < in.primitives.size(); ++i) {
         list += (i ? "; " : "") + std::to_string(i) + ": " + describe(in.primitives[i]);
-    return "Build a bounding volume hierarchy over these spheres (" + list +
-           ") with the median split: a node with at most max_leaf = " +
-           std::to_string(in.max_leaf) +
-           " primitives is a leaf; otherwise sort its primitives by their centre along the axis "
-           "where the centres spread most (ties: x, then y, then z; equal centres by index) and "
-           "send the first ⌊n/2⌋ left, the rest right. Number the nodes in the order they are "
-           "made, depth first, the left child first (the root is node 0). Then trace the ray "
-           "P(t) = E + t d, t ≥ 0, with E = " +
-           num(in.origin) + " and d = " + num(in.direction) +
+        spheres = spheres && in.primitives[i].kind == PrimitiveKind::Sphere;
+    }
+    const std::string what = spheres ? "spheres" : "primitives";
+    std::string q =
+        "Build a bounding volume hierarchy over these " + what + " (" + list + ") with ";
+    q += in.split == Split::Median
+             ? "the median split: a node with at most max_leaf = " + std::to_string(in.max_leaf) +
+                   " primitives is a leaf; otherwise sort its primitives by their centre along "
+                   "the axis where the centres spread most (ties: x, then y, then z; equal "
+                   "centres by index) and send the first ⌊n/2⌋ left, the rest right."
+             : "the surface area heuristic: a node with at most max_leaf = " +
+                   std::to_string(in.max_leaf) +
+                   " primitives is a leaf; otherwise sort its primitives by the centre of their "
+                   "bounding boxes along the axis where the centres spread most (ties: x, then "
+                   "y, then z; equal centres by index), cost every cut k = 1 … n−1 (the first k "
+                   "left) by C(k) = 1 + (S_L/S)·N_L + (S_R/S)·N_R (S: surface areas of the "
+                   "boxes) and take the cheapest (ties: the smallest k) — unless it is not below "
+                   "n, the cost of a leaf, which then keeps them all.";
+    q += " Number the nodes in the order they are made, depth first, the left child first (the "
+         "root is node 0).";
+    if (!in.has_ray)
+        return q +
+               " Give the leaves left to right (leaves: a list of lists of primitive indices, "
+               "each ascending).";
+    return q + " Then trace the ray P(t) = E + t d, t ≥ 0, with E = " + num(in.origin) +
+           " and d = " + num(in.direction) +
            ": start with the stack [0]; pop a node and test its box (the slab test); skip it if "
-           "missed or if it is entered beyond the closest hit so far; at a leaf test its spheres; "
-           "at an inner node push the far child, then the near one (the left child is near when "
-           "d's component along the node's split axis is ≥ 0). Give the leaves left to right "
-           "(leaves: a list of lists of primitive indices, each ascending), the nodes popped in "
-           "order (visited), and the sphere hit first (hit_primitive, null for none).";
+           "missed or if it is entered beyond the closest hit so far; at a leaf test its " +
+           what +
+           "; at an inner node push the far child, then the near one (the left child is near "
+           "when d's component along the node's split axis is ≥ 0). Give the leaves left to "
+           "right (leaves: a list of lists of primitive indices, each ascending), the nodes "
+           "popped in order (visited), and the primitive hit first (hit_primitive, null for "
+           "none; on a tie in t the smaller index).";
 }
 
-std::vector<std::string> Bvh::answer_fields() {
+std::vector<std::string> Bvh::answer_fields(const Input& in) {
+    if (!in.has_ray) return {"leaves"};
     return {"leaves", "visited", "hit_primitive"};
 }
 
