@@ -844,13 +844,20 @@ void Bvh::draw(const State& s, Scene& scene) {
     }
     scene.extent3 = 0;
 
-    // 2D: the tree. Node x = the middle of its range of primitives, y = −1.5 · depth.
+    // 2D: the tree. Node x = the middle of its range of primitives, y = −dy · depth, dy growing
+    // with n so a wide tree is also tall enough to read. Past 31 nodes only the node in hand and
+    // those on the stack are labelled, and the leaves' lists are left to the narration.
     std::vector<std::uint8_t> seen(r.nodes.size(), 0);  // 1 missed/pruned, 2 entered
     if (tracing)
         for (std::size_t v = 0; v < popped; ++v)
             seen[r.visited[v]] =
                 s.visits[v] == Visit::Missed || s.visits[v] == Visit::Pruned ? 1 : 2;
-    auto pos = [&](const Node& nd) { return dvec2(nd.first + 0.5 * nd.count, -1.5 * nd.depth); };
+    const double dy = std::max(1.5, static_cast<double>(n) / 8);
+    const bool crowded = r.nodes.size() > 31;
+    std::vector<std::uint8_t> stacked(r.nodes.size(), 0);
+    if (tracing)
+        for (int id : s.stack) stacked[id] = 1;
+    auto pos = [&](const Node& nd) { return dvec2(nd.first + 0.5 * nd.count, -dy * nd.depth); };
     for (std::size_t id = 0; id < r.nodes.size(); ++id) {
         const Node& nd = r.nodes[id];
         if (nd.parent >= 0)
@@ -860,8 +867,8 @@ void Bvh::draw(const State& s, Scene& scene) {
     // A light frame around the tree's area, so the view does not zoom in on a lone root.
     int depth = 1;
     for (const Node& nd : r.nodes) depth = std::max(depth, nd.depth);
-    const double w = static_cast<double>(in.primitives.size()), bottom = -1.5 * depth - 1.5;
-    scene.polygons.push_back({{{0, bottom}, {w, bottom}, {w, 2.7}, {0, 2.7}},
+    const double w = static_cast<double>(in.primitives.size()), bottom = -dy * (depth + 1.3);
+    scene.polygons.push_back({{{0, bottom}, {w, bottom}, {w, 2.4 * dy}, {0, 2.4 * dy}},
                               {Role::Construction, 1.0f, true},
                               true,
                               false});
@@ -877,11 +884,12 @@ void Bvh::draw(const State& s, Scene& scene) {
                        : Role::Active;
         const std::uint32_t rgba = now || seen[id] || tracing ? 0u : depth_colour(nd.depth);
         scene.points.push_back({pos(nd), "", {role, 1.0f, false, rgba}, now ? 8.0f : 6.0f});
-        scene.labels.push_back({pos(nd) + dvec2(0, 0.45), std::to_string(id), {role}});
-        if (nd.leaf()) {  // its primitives below it, every other leaf a row lower
+        if (crowded && !now && !stacked[id]) continue;
+        scene.labels.push_back({pos(nd) + dvec2(0, 0.3 * dy), std::to_string(id), {role}});
+        if (nd.leaf() && !crowded) {  // its primitives below it, every other leaf a row lower
             std::vector<int> ids(r.order.begin() + nd.first, r.order.begin() + nd.first + nd.count);
             std::sort(ids.begin(), ids.end());
-            scene.labels.push_back({pos(nd) + dvec2(0, leaves % 2 ? -1.1 : -0.55),
+            scene.labels.push_back({pos(nd) + dvec2(0, leaves % 2 ? -0.73 * dy : -0.37 * dy),
                                     list(ids.data(), nd.count),
                                     {role}});
             ++leaves;
@@ -890,9 +898,9 @@ void Bvh::draw(const State& s, Scene& scene) {
     if (tracing && !r.nodes.empty()) {
         const double x = 0.5 * r.nodes[0].count;
         scene.labels.push_back(
-            {dvec2(x, 2.2), "orange: popped now · teal: entered", {Role::Neutral}});
+            {dvec2(x, 2.0 * dy), "orange: popped now · teal: entered", {Role::Neutral}});
         scene.labels.push_back(
-            {dvec2(x, 1.3), "red: missed or pruned · magenta: on the stack", {Role::Neutral}});
+            {dvec2(x, 1.4 * dy), "red: missed or pruned · magenta: on the stack", {Role::Neutral}});
     }
     // The stack, waiting.
     if (tracing)
