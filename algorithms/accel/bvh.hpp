@@ -19,17 +19,17 @@
 //
 // Traversal (one step per node popped): the stack starts with the root. A popped node's box is
 // tested with the slab test (RayAabb; the box grown by a hair, kPad); the ray is in it for
-// t ∈ [t_enter, t_exit] with
-// t_enter = max(t_min, 0). The node is skipped when the box is missed, or pruned when
-// t_enter > t_best, the closest hit so far (whatever it holds is farther). Otherwise a leaf's
-// primitives are intersected (primitive.hpp: the nearest t ≥ 0), and an inner node's children
-// are pushed, the far one first so the near one is popped next: left is near when
-// d[split axis] ≥ 0. A hit replaces the best when t < t_best, or t = t_best with a smaller
-// primitive index — the rule of the brute-force loop over all primitives, so both find the same
-// primitive even at exact ties. The ray is the half-line E + t d, t ≥ 0, as in ray-aabb.
+// t ∈ [t_enter, t_exit] with t_enter = max(t_min, 0). The node is skipped when the box is missed,
+// or pruned when t_enter > t_best, the closest hit so far (whatever it holds is farther). Otherwise
+// a leaf's primitives are intersected (primitive.hpp: the nearest t ≥ 0), and an inner node's
+// children are pushed, the far one first so the near one is popped next: left is near when d[split
+// axis] ≥ 0. A hit replaces the best when t < t_best, or t = t_best with a smaller primitive index
+// — the rule of the brute-force loop over all primitives, so both find the same primitive even at
+// exact ties. The ray is the half-line E + t d, t ≥ 0, as in ray-aabb.
 //
 // The counts: box_tests = nodes popped, primitive_tests = primitives intersected; brute force
-// makes n primitive tests.
+// makes n primitive tests. Without a ray only the build is stepped. Limits (a lesson's size):
+// 1 to 64 primitives, max_leaf 1 to 16, every coordinate within ±1e150.
 #pragma once
 
 #include <cstdint>
