@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/trigonometric.hpp>
 #include <thread>
 
@@ -344,6 +345,10 @@ Prepared prepare(const Scene& s) {
         p.objects.push_back(q);
     }
     p.epsilon = 1e-7 * scale;
+    std::vector<Bounds> boxes;
+    boxes.reserve(s.objects.size());
+    for (const Object& o : s.objects) boxes.push_back(object_bounds(o));
+    p.bvh = build_bvh(boxes);
     p.textures = prepare_textures(s);
     return p;
 }
@@ -396,37 +401,233 @@ dvec3 offset_at(const PreparedObject& o, double time) {
 }
 }  // namespace
 
-Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
+namespace {
+
+constexpr double kInf = Quadric::kInf;
+
+// One object's t at `time` (a moving object is tested where it is then).
+double object_t(const PreparedObject& o, dvec3 origin, dvec3 d, double t_min, double time) {
+    return o.moving ? intersect_object(o, origin - o.velocity * time, d, t_min)
+                    : intersect_object(o, origin, d, t_min);
+}
+
+// The hit's normal and side, once the nearest object is known.
+Hit finish_hit(const Prepared& p, int object, double t, dvec3 origin, dvec3 d, double t_min,
+               double time) {
     Hit h;
-    double best = t_max;
-    for (std::size_t k = 0; k < p.objects.size(); ++k) {
-        const PreparedObject& o = p.objects[k];
-        const double t = o.moving ? intersect_object(o, origin - o.velocity * time, d, t_min)
-                                  : intersect_object(o, origin, d, t_min);
-        if (t < best) best = t, h.object = static_cast<int>(k);
-    }
-    if (h.object < 0) return h;
-    h.t = best;
-    h.point = origin + best * d;
-    const dvec3 shift = offset_at(p.objects[h.object], time);
-    dvec3 n = p.objects[h.object].moving
-                  ? object_normal(p.objects[h.object], h.point - shift, origin - shift, d, t_min)
-                  : object_normal(p.objects[h.object], h.point, origin, d, t_min);
+    h.object = object;
+    h.t = t;
+    h.point = origin + t * d;
+    const dvec3 shift = offset_at(p.objects[object], time);
+    dvec3 n = p.objects[object].moving
+                  ? object_normal(p.objects[object], h.point - shift, origin - shift, d, t_min)
+                  : object_normal(p.objects[object], h.point, origin, d, t_min);
     if (n == dvec3(0.0)) n = -unit(d);  // a cone's apex: no gradient; face the ray
     h.entering = glm::dot(n, d) <= 0;   // a grazing ray counts as arriving from outside
     h.normal = h.entering ? n : -n;
     return h;
 }
 
+// The ray as the box tests want it: 1/d per axis. A zero component gets 1/d = 10³⁰⁰ instead
+// of ∞, so that a box face through the origin gives 0 · 10³⁰⁰ = 0, never 0 · ∞ = NaN; the
+// slab is then [0, ±huge], which is right: the origin is on the face.
+struct BoxRay {
+    dvec3 origin, inv;
+    int near_first[3];  // per split axis: 1 when the left child is the near one
+};
+
+BoxRay box_ray(dvec3 origin, dvec3 d) {
+    BoxRay r;
+    r.origin = origin;
+    for (int i = 0; i < 3; ++i) {
+        const double inv = 1 / d[i];
+        r.inv[i] = std::isfinite(inv) ? inv : std::copysign(1e300, d[i]);
+        r.near_first[i] = d[i] >= 0;
+    }
+    return r;
+}
+
+// The slab test on a node's box for t in [t0, t1]: where the ray enters it, or +∞ for a miss.
+inline double box_entry(const Bounds& b, const BoxRay& r, double t0, double t1) {
+    for (int i = 0; i < 3; ++i) {
+        double a = (b.min[i] - r.origin[i]) * r.inv[i], c = (b.max[i] - r.origin[i]) * r.inv[i];
+        if (a > c) std::swap(a, c);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, c);
+    }
+    return t0 <= t1 ? t0 : kInf;
+}
+
+// Front-to-back traversal: visit(object) for each object of each leaf whose box the ray meets
+// at t ≤ limit(); visit returns true to stop.
+template <class Limit, class Visit>
+void traverse(const ObjectBvh& bvh, const BoxRay& r, double t_min, Limit limit, Visit visit) {
+    if (bvh.nodes.empty()) return;
+    struct Entry {
+        int node;
+        double t;
+    };
+    Entry stack[kMaxBvhDepth + 2];
+    int top = 0;
+    const double t0 = box_entry(bvh.nodes[0].box, r, t_min, limit());
+    if (t0 == kInf) return;
+    stack[top++] = {0, t0};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.t > limit()) continue;  // entered beyond the best hit: nothing nearer inside
+        const BvhNode& n = bvh.nodes[e.node];
+        if (n.count > 0) {
+            for (int k = n.first; k < n.first + n.count; ++k)
+                if (visit(bvh.items[k])) return;
+            continue;
+        }
+        const int left = e.node + 1, right = n.right;
+        const double tl = box_entry(bvh.nodes[left].box, r, t_min, limit());
+        const double tr = box_entry(bvh.nodes[right].box, r, t_min, limit());
+        // Push the far child first so that the near one is popped next.
+        const bool left_near = r.near_first[n.axis] != 0;
+        const int far = left_near ? right : left, near = left_near ? left : right;
+        const double t_far = left_near ? tr : tl, t_near = left_near ? tl : tr;
+        if (t_far != kInf) stack[top++] = {far, t_far};
+        if (t_near != kInf) stack[top++] = {near, t_near};
+    }
+}
+
+}  // namespace
+
+Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
+    double best = t_max;
+    int object = -1;
+    // Brute force's rule: the least t, and on a tie the smaller index.
+    auto test = [&](int k) {
+        const double t = object_t(p.objects[k], origin, d, t_min, time);
+        if (t < best || (t == best && object >= 0 && k < object)) best = t, object = k;
+        return false;
+    };
+    for (int k : p.bvh.unbounded) test(k);
+    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return best; }, test);
+    if (object < 0) return Hit{};
+    return finish_hit(p, object, best, origin, d, t_min, time);
+}
+
+Hit nearest_hit_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,
+                            double time) {
+    double best = t_max;
+    int object = -1;
+    for (std::size_t k = 0; k < p.objects.size(); ++k) {
+        const double t = object_t(p.objects[k], origin, d, t_min, time);
+        if (t < best) best = t, object = static_cast<int>(k);
+    }
+    if (object < 0) return Hit{};
+    return finish_hit(p, object, best, origin, d, t_min, time);
+}
+
 int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,
                   double time) {
-    for (std::size_t k = 0; k < p.objects.size(); ++k) {
-        const PreparedObject& o = p.objects[k];
-        const double t = o.moving ? intersect_object(o, origin - o.velocity * time, d, t_min)
-                                  : intersect_object(o, origin, d, t_min);
-        if (t < t_max) return static_cast<int>(k);
-    }
+    // The smallest index among the blockers (brute force's answer): the unbounded objects in
+    // order, then every leaf the shadow ray's segment meets, testing only smaller indices.
+    int first = -1;
+    for (int k : p.bvh.unbounded)
+        if (object_t(p.objects[k], origin, d, t_min, time) < t_max) {
+            first = k;
+            break;
+        }
+    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return t_max; }, [&](int k) {
+        if ((first < 0 || k < first) && object_t(p.objects[k], origin, d, t_min, time) < t_max)
+            first = k;
+        return false;
+    });
+    return first;
+}
+
+int first_blocker_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t_min,
+                              double t_max, double time) {
+    for (std::size_t k = 0; k < p.objects.size(); ++k)
+        if (object_t(p.objects[k], origin, d, t_min, time) < t_max) return static_cast<int>(k);
     return -1;
+}
+
+bool blocked(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
+    for (int k : p.bvh.unbounded)
+        if (object_t(p.objects[k], origin, d, t_min, time) < t_max) return true;
+    bool hit = false;
+    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return t_max; }, [&](int k) {
+        return hit = object_t(p.objects[k], origin, d, t_min, time) < t_max;
+    });
+    return hit;
+}
+
+namespace {
+
+// A quadric's model-space box, or the empty box when its surface is unbounded (or the slab
+// leaves none of it). F ≤ 0 inside; the box holds the part with zmin ≤ z ≤ zmax.
+Bounds quadric_model_bounds(const Quadric& q) {
+    const bool cut = std::isfinite(q.zmin) && std::isfinite(q.zmax);
+    const double zm = cut ? std::max(std::fabs(q.zmin), std::fabs(q.zmax)) : 0;
+    Bounds b;
+    switch (q.kind) {
+        case QuadricKind::Sphere:
+            b.min = dvec3(-q.r), b.max = dvec3(q.r);
+            break;
+        case QuadricKind::Ellipsoid:
+            b.min = -dvec3(q.a, q.b, q.c), b.max = dvec3(q.a, q.b, q.c);
+            break;
+        case QuadricKind::Paraboloid: {  // x²/p² + y²/q² = z ≥ 0
+            if (!std::isfinite(q.zmax) || q.zmax < 0) return {};
+            const double s = std::sqrt(q.zmax);
+            b.min = dvec3(-q.p * s, -q.q * s, std::max(0.0, q.zmin));
+            b.max = dvec3(q.p * s, q.q * s, q.zmax);
+            return b;
+        }
+        case QuadricKind::Hyperboloid: {  // x²/a² + y²/b² = 1 + z²/c²
+            if (!cut) return {};
+            const double s = std::sqrt(1 + (zm / q.c) * (zm / q.c));
+            b.min = dvec3(-q.a * s, -q.b * s, q.zmin), b.max = dvec3(q.a * s, q.b * s, q.zmax);
+            return b;
+        }
+        case QuadricKind::Cone: {  // x²/p² + y²/q² = z²/r²
+            if (!cut) return {};
+            const double s = zm / q.r;
+            b.min = dvec3(-q.p * s, -q.q * s, q.zmin), b.max = dvec3(q.p * s, q.q * s, q.zmax);
+            return b;
+        }
+        case QuadricKind::Cylinder:  // x²/p² + y²/q² = 1
+            if (!cut) return {};
+            b.min = dvec3(-q.p, -q.q, q.zmin), b.max = dvec3(q.p, q.q, q.zmax);
+            return b;
+    }
+    // Closed surfaces: the slab can only shrink them.
+    b.min.z = std::max(b.min.z, q.zmin);
+    b.max.z = std::min(b.max.z, q.zmax);
+    if (b.min.z > b.max.z) return {};
+    return b;
+}
+
+}  // namespace
+
+Bounds object_bounds(const Object& o) {
+    if (o.velocity != dvec3(0.0)) return {};  // it moves: tested for every ray
+    Bounds b;
+    switch (o.kind) {
+        case ObjectKind::Triangle:
+            b.grow(o.p0), b.grow(o.p1), b.grow(o.p2);
+            return b;
+        case ObjectKind::Quadric: {
+            const Bounds m = quadric_model_bounds(o.quadric);
+            if (m.empty()) return {};
+            // The world box of the model box's eight corners (M is affine).
+            for (int c = 0; c < 8; ++c) {
+                const dvec3 corner(c & 1 ? m.max.x : m.min.x, c & 2 ? m.max.y : m.min.y,
+                                   c & 4 ? m.max.z : m.min.z);
+                b.grow(dvec3(o.quadric.world_from_model * glm::dvec4(corner, 1.0)));
+            }
+            return b;
+        }
+        case ObjectKind::Plane:
+        case ObjectKind::Csg:
+            return {};
+    }
+    return {};
 }
 
 Surface moving_surface_at(const Scene& s, const Prepared& p, const Hit& h, dvec3 origin, dvec3 d,
@@ -613,8 +814,8 @@ Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
                 if (!lt.facing) continue;
                 if (s.settings.shadows) {
                     ++counts.shadow;
-                    if (first_blocker(p, offset_point(p, h.point, h.normal), lt.l, kRayEpsilon,
-                                      lt.distance, time) >= 0)
+                    if (blocked(p, offset_point(p, h.point, h.normal), lt.l, kRayEpsilon,
+                                lt.distance, time))
                         continue;
                 }
                 c += (lt.diffuse + lt.specular) * share;
@@ -625,8 +826,7 @@ Color trace(const Scene& s, const Prepared& p, dvec3 origin, dvec3 d, int depth,
         if (!lt.facing) continue;  // a light behind the surface needs no shadow ray
         if (s.settings.shadows) {
             ++counts.shadow;
-            if (first_blocker(p, offset_point(p, h.point, h.normal), lt.l, kRayEpsilon, lt.distance,
-                              time) >= 0)
+            if (blocked(p, offset_point(p, h.point, h.normal), lt.l, kRayEpsilon, lt.distance, time))
                 continue;
         }
         c += lt.diffuse + lt.specular;

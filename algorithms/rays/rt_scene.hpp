@@ -59,6 +59,7 @@
 #include "core/shared.hpp"
 #include "rays/csg.hpp"
 #include "rays/quadric.hpp"
+#include "rays/rt_bvh.hpp"
 #include "rays/rt_texture.hpp"
 #include "sampling/patterns.hpp"
 
@@ -224,6 +225,7 @@ struct Prepared {
     std::vector<PreparedObject> objects;
     double epsilon = 1e-9;     // the offset of secondary rays, scaled to the scene's size
     bool distributed = false;  // rt::distributed(scene)
+    ObjectBvh bvh;             // over the objects with finite bounds (rt_bvh.hpp)
     PreparedTextures textures;
     bool operator==(const Prepared&) const = default;
 };
@@ -252,6 +254,20 @@ Hit nearest_hit(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
 // object found, or -1.
 int first_blocker(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, double t_min,
                   double t_max, double time = 0);
+// The same answers by testing every object in turn: the reference the hierarchy is checked
+// against (tests, benchmark).
+Hit nearest_hit_brute_force(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
+                            double t_min = kRayEpsilon, double t_max = Quadric::kInf,
+                            double time = 0);
+int first_blocker_brute_force(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
+                              double t_min, double t_max, double time = 0);
+// Whether any object lies on the ray at t_min < t < t_max: first_blocker(…) ≥ 0, found
+// sooner (the first blocker met, not the one with the smallest index).
+bool blocked(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, double t_min,
+             double t_max, double time = 0);
+// An object's bounding box (world space), or the empty box when it has none: planes, CSG
+// objects, moving objects, quadrics not closed or not cut by a z slab on both sides.
+Bounds object_bounds(const Object& o);
 // The hit's t with one object (or +inf), and its normal there: the pieces of nearest_hit. A CSG
 // object's normal depends on which surface the ray met, not only on the point: object_normal
 // takes the ray too.
