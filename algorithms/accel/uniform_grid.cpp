@@ -714,6 +714,133 @@ void grid_primitive(Scene& scene, const Primitive& p, Style style, float alpha) 
     }
 }
 
+bool finite2(glm::dvec2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+void grid_push2(Scene& scene, Polygon2 poly) {
+    for (const glm::dvec2& p : poly.points)
+        if (!finite2(p)) return;
+    scene.polygons.push_back(std::move(poly));
+}
+
+glm::dvec2 xy(dvec3 p) {
+    return {p.x, p.y};
+}
+
+Polygon2 grid_rect(dvec3 mn, dvec3 mx, Style style, bool filled) {
+    return Polygon2{{{mn.x, mn.y}, {mx.x, mn.y}, {mx.x, mx.y}, {mn.x, mx.y}}, style, true, filled};
+}
+
+// The primitive seen from the front (along −z): a sphere's outline circle, a box's rectangle,
+// the triangle's projection.
+void grid_primitive2(Scene& scene, const Primitive& p, Style style) {
+    switch (p.kind) {
+        case PrimitiveKind::Sphere: {
+            Polygon2 c{{}, style, true, true};
+            for (int i = 0; i < 48; ++i) {
+                const double phi = 2 * 3.14159265358979323846 * i / 48;
+                c.points.push_back(xy(p.a) + p.radius * glm::dvec2(std::cos(phi), std::sin(phi)));
+            }
+            grid_push2(scene, std::move(c));
+            break;
+        }
+        case PrimitiveKind::Triangle:
+            grid_push2(scene, Polygon2{{xy(p.a), xy(p.b), xy(p.c)}, style, true, true});
+            break;
+        case PrimitiveKind::Box:
+            grid_push2(scene, grid_rect(p.a, p.b, style, true));
+            break;
+    }
+}
+
+// How far to draw the ray: past the grid's exit, or a grid's diagonal when it misses.
+double grid_ray_far(const Grid& g, const Input& in) {
+    const RayAabb::Result box = RayAabb::intersect({g.box.min, g.box.max, in.origin, in.direction});
+    const double diag = glm::length(g.box.extent()) / glm::length(in.direction);
+    double t_far = 1;
+    if (box.hit)
+        t_far = box.t_max + 0.15 * diag;
+    else if (std::isfinite(diag))
+        t_far = std::max(diag, 1.0);
+    return std::isfinite(t_far) ? t_far : 1.0;
+}
+
+Cell grid_cell_of(const Grid& g, std::size_t ci) {
+    const int i = static_cast<int>(ci);
+    return {i % g.n[0], (i / g.n[0]) % g.n[1], i / (g.n[0] * g.n[1])};
+}
+
+// The grid seen from the front (one layer in z): the cells visited filled (blue; the current
+// one orange), the lattice, the column and row numbers, the ray and its points.
+void front_view(const UniformGrid::State& s, Scene& scene) {
+    const Input& in = *s.in;
+    const Grid& g = *s.grid;
+    const Walk& w = s.w;
+    const bool cell_step = s.last != Outcome::Placed && s.last != Outcome::None &&
+                           s.last != Outcome::Entered && s.last != Outcome::StartInside &&
+                           s.last != Outcome::MissGrid;
+    for (std::size_t i = 0; i < w.visited.size(); ++i) {
+        const bool current = cell_step && i + 1 == w.visited.size();
+        const Bounds b = g.cell_box(w.visited[i]);
+        grid_push2(scene,
+                   grid_rect(b.min, b.max, {current ? Role::Active : Role::Window, 2.0f}, true));
+    }
+    if (w.inside && !cell_step && s.phase == Phase::Cell) {  // the first cell, about to be visited
+        const Bounds b = g.cell_box(w.cell);
+        grid_push2(scene, grid_rect(b.min, b.max, {Role::Active, 2.0f, true}, false));
+    }
+    if (s.last == Outcome::Placed) {
+        const int p = s.built - 1;
+        for (std::size_t ci = 0; ci < g.cells.size(); ++ci) {
+            const auto& list = g.cells[ci];
+            if (std::find(list.begin(), list.end(), p) == list.end()) continue;
+            const Bounds b = g.cell_box(grid_cell_of(g, ci));
+            grid_push2(scene, grid_rect(b.min, b.max, {Role::Kept, 1.0f}, true));
+        }
+    }
+    const Style lattice{Role::Construction, 1.0f};
+    for (int i = 0; i <= g.n[0]; ++i) {
+        const double x = g.plane(0, i);
+        scene.segments.push_back({{x, g.box.min.y}, {x, g.box.max.y}, "", lattice, false});
+    }
+    for (int j = 0; j <= g.n[1]; ++j) {
+        const double y = g.plane(1, j);
+        scene.segments.push_back({{g.box.min.x, y}, {g.box.max.x, y}, "", lattice, false});
+    }
+    for (int i = 0; i < g.n[0]; ++i)
+        scene.labels.push_back({{g.box.min.x + (i + 0.5) * g.size.x, g.box.min.y - 0.3 * g.size.y},
+                                "i " + std::to_string(i),
+                                {Role::Neutral}});
+    for (int j = 0; j < g.n[1]; ++j)
+        scene.labels.push_back({{g.box.max.x + 0.35 * g.size.x, g.box.min.y + (j + 0.5) * g.size.y},
+                                "j " + std::to_string(j),
+                                {Role::Neutral}});
+
+    const dvec3 E = in.origin, d = in.direction;
+    const double t_far = grid_ray_far(g, in);
+    if (d.x != 0 || d.y != 0) {
+        const Segment2 ray{xy(E), xy(E + t_far * d), "", {Role::Subject, 1.5f}, true};
+        if (finite2(ray.a) && finite2(ray.b)) scene.segments.push_back(ray);
+    }
+    auto point = [&](double t, const std::string& label, Role role, float radius) {
+        const glm::dvec2 p = xy(E + t * d);
+        if (finite2(p)) scene.points.push_back({p, label, {role}, radius});
+    };
+    point(0, "E", Role::Subject, 5.0f);
+    const bool walking = s.phase != Phase::Build && s.last != Outcome::Placed;
+    if (walking && s.entry.hit && s.entry.t_min > 0)
+        point(s.entry.t_min, "in t = " + num(s.entry.t_min, 4), Role::Entering, 5.0f);
+    if (cell_step && std::isfinite(w.t_exit))
+        point(w.t_exit, "t_exit " + num(w.t_exit, 4), Role::Leaving, 4.0f);
+    if (w.best >= 0 && walking) {
+        if (s.phase == Phase::Done)
+            point(w.best_t, "hit t = " + num(w.best_t, 4), Role::Kept, 8.0f);
+        else
+            point(w.best_t, "not final: t = " + num(w.best_t, 4), Role::Discarded, 7.0f);
+    }
+}
+
 }  // namespace
 
 // 3D: the grid's lattice (thin grey lines), the primitives (grey; orange when tested in this
@@ -724,6 +851,9 @@ void UniformGrid::draw(const State& s, Scene& scene) {
     const Input& in = *s.in;
     const Grid& g = *s.grid;
     const Walk& w = s.w;
+    // One layer in z: also the 2D picture seen from the front, the exam's "4 × 4 grid".
+    const bool front = g.n[2] == 1;
+    if (front) front_view(s, scene);
 
     // The lattice: lines along each axis through every plane crossing of the other two.
     for (int a = 0; a < 3; ++a) {
@@ -783,18 +913,16 @@ void UniformGrid::draw(const State& s, Scene& scene) {
         grid_primitive(scene, in.primitives[p], st, alpha);
         const Bounds b = bounds(in.primitives[p]);
         scene.labels3.push_back({b.max, std::to_string(p), {st.role}});
+        if (front) {
+            grid_primitive2(scene, in.primitives[p], st);
+            const glm::dvec2 at2{b.max.x, b.max.y};
+            if (finite2(at2)) scene.labels.push_back({at2, std::to_string(p), {st.role}});
+        }
     }
 
     // The ray.
     const dvec3 E = in.origin, d = in.direction;
-    double t_far = 1;
-    const RayAabb::Result box = RayAabb::intersect({g.box.min, g.box.max, E, d});
-    const double diag = glm::length(g.box.extent()) / glm::length(d);
-    if (box.hit)
-        t_far = box.t_max + 0.15 * diag;
-    else if (std::isfinite(diag))
-        t_far = std::max(diag, 1.0);
-    if (!std::isfinite(t_far)) t_far = 1;
+    const double t_far = grid_ray_far(g, in);
     grid_push(scene, Segment3{E, E + t_far * d, "E + t d", {Role::Subject, 1.5f}, true});
     grid_push(scene, Point3{E, "E", {Role::Subject}, 5.0f});
     if (walking && s.entry.hit && s.entry.t_min > 0)

@@ -301,6 +301,16 @@ std::string scene_problem(const cg::Scene& s) {
             if (!f3(q)) return "faces3";
     for (const auto& l : s.labels3)
         if (!f3(l.p)) return "labels3";
+    auto f2 = [](glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+    for (const auto& g : s.segments)
+        if (!f2(g.a) || !f2(g.b)) return "segments";
+    for (const auto& p : s.points)
+        if (!f2(p.p)) return "points";
+    for (const auto& l : s.labels)
+        if (!f2(l.p)) return "labels";
+    for (const auto& g : s.polygons)
+        for (auto q : g.points)
+            if (!f2(q)) return "polygons";
     return "";
 }
 
@@ -733,6 +743,19 @@ TEST_CASE("uniform-grid: the picture — the lattice, the cells visited, the tes
         if (p.style.role == cg::Role::Discarded)
             pending = p.label.find("not final") != std::string::npos;
     CHECK(pending);
+    // The front view (one layer in z): the same cells as filled squares, the ray, the lattice.
+    CHECK(scene.has_2d());
+    int current2 = 0, earlier2 = 0;
+    for (const auto& g : scene.polygons) {
+        if (g.points.size() != 4 || !g.filled) continue;
+        const glm::dvec2 lo = glm::min(glm::min(g.points[0], g.points[1]), g.points[2]);
+        if (g.style.role == cg::Role::Active) current2 += lo == glm::dvec2(0, 1);
+        if (g.style.role == cg::Role::Window) earlier2 += lo == glm::dvec2(0, 0);
+    }
+    CHECK((current2 == 1 && earlier2 == 1));
+    int lattice2 = 0;
+    for (const auto& g : scene.segments) lattice2 += g.style.role == cg::Role::Construction;
+    CHECK(lattice2 == 5 + 5);
     int orange_circles = 0;
     for (const auto& g : scene.segments3) orange_circles += g.style.role == cg::Role::Active;
     CHECK(orange_circles == 3 * 32);
