@@ -573,16 +573,23 @@ void narrate_cell(const State& s, StepInfo& info) {
         case Outcome::Hit:
             info.event = "hit";
             info.line = kLineFinal;
-            text += " The nearest hit, primitive " + std::to_string(w.best) +
-                    " at t = " + num(w.best_t) + ", is ≤ t_exit = " + tn(w.t_exit) +
-                    ": it lies in this cell, and every cell the ray passed before has been "
-                    "tested, so nothing nearer exists. Final: the walk stops after " +
-                    std::to_string(w.visited.size()) + " cell" +
+            if (w.best_t <= w.t_exit)
+                text += " The nearest hit, primitive " + std::to_string(w.best) +
+                        " at t = " + num(w.best_t) + ", is ≤ t_exit = " + tn(w.t_exit) +
+                        ": it lies in this cell, and every cell the ray passed before has been "
+                        "tested, so nothing nearer exists.";
+            else  // past the last cell's exit only by a rounding: nothing is left to test
+                text += " The walk leaves the grid here, and the nearest hit, primitive " +
+                        std::to_string(w.best) + " at t = " + num(w.best_t) +
+                        ", lies past this last exit t_exit = " + tn(w.t_exit) +
+                        " only by a rounding: no cell is left, so it is final.";
+            text += " Final: the walk stops after " + std::to_string(w.visited.size()) + " cell" +
                     (w.visited.size() == 1 ? "" : "s") + " and " +
                     std::to_string(w.primitive_tests) + " primitive test" +
                     (w.primitive_tests == 1 ? "" : "s") +
                     " (brute force: " + std::to_string(s.in->primitives.size()) + ").";
-            info.math = "t = " + tt(w.best_t) + " \\le t_{exit} = " + tt(w.t_exit);
+            info.math = "t = " + tt(w.best_t) + (w.best_t <= w.t_exit ? " \\le" : " >") +
+                        " t_{exit} = " + tt(w.t_exit);
             break;
         case Outcome::Exit:
             info.event = "exit";

@@ -214,6 +214,17 @@ UniformGrid::Input random_scene(cg::Rng& rng) {
                 sphere(bb.centre(), 0.2 * std::max(1e-3 * scale, glm::length(bb.extent()))));
         }
     }
+    if (rng.chance(0.4)) {  // exact ties: copies (same t, another index) and integer boxes
+        const std::size_t m = in.primitives.size();  // sharing faces with their neighbours
+        for (std::size_t i = 0; i < m; i += 3) in.primitives.push_back(in.primitives[i]);
+        for (int i = 0; i < 6; ++i) {
+            const dvec3 c(double(rng.integer(-4, 3)), double(rng.integer(-4, 3)),
+                          double(rng.integer(-4, 3)));
+            in.primitives.push_back(box(scale * c, scale * (c + dvec3(1.0))));
+            in.primitives.push_back(
+                box(scale * (c + dvec3(1, 0, 0)), scale * (c + dvec3(2, 1, 1))));
+        }
+    }
     if (in.primitives.size() > UniformGrid::kMaxPrimitives)
         in.primitives.resize(UniformGrid::kMaxPrimitives);
     for (int a = 0; a < 3; ++a) in.cells[a] = static_cast<int>(rng.integer(1, 8));
@@ -522,8 +533,8 @@ TEST_CASE(
     "uniform-grid: 10,000 random rays per random scene — the hit is brute force's, the "
     "cells are every cell the ray meets, in order",
     "[accel][uniform-grid]") {
-    long rays = 0, hits = 0, ties = 0, inside = 0, zero = 0, beyond = 0, missed_grid = 0,
-         skipped_cells = 0, corner_cases = 0;
+    long rays = 0, hits = 0, ties = 0, exact_ties = 0, inside = 0, zero = 0, beyond = 0,
+         missed_grid = 0, skipped_cells = 0, corner_cases = 0;
     long grid_tests = 0, brute_tests = 0;
     for (int scene = 0; scene < 12; ++scene) {
         cg::Rng rng(100 + scene);
@@ -548,6 +559,10 @@ TEST_CASE(
             REQUIRE(r.hit == (bp >= 0));
             if (r.hit) {
                 ++hits;
+                int at_min = 0;  // primitives brute force finds at the same nearest t
+                for (const auto& p : in.primitives)
+                    at_min += cg::intersect(p, in.origin, in.direction).t == bt;
+                exact_ties += at_min > 1;
                 REQUIRE(std::fabs(r.t - bt) <= 1e-12 * std::fabs(bt) + 1e-300);
                 if (r.primitive != bp) {  // only at an exact tie
                     const auto h =
@@ -618,8 +633,10 @@ TEST_CASE(
     CHECK(zero > 20'000);
     CHECK(missed_grid > 5'000);
     CHECK(grid_tests < brute_tests);
-    WARN("uniform-grid random: " << rays << " rays on 12 scenes, " << hits << " hits (" << ties
-                                 << " ties to another primitive at the same t), " << inside
+    CHECK(exact_ties > 1'000);
+    WARN("uniform-grid random: " << rays << " rays on 12 scenes, " << hits << " hits ("
+                                 << exact_ties << " with several primitives at the nearest t, "
+                                 << ties << " of them won by another primitive), " << inside
                                  << " from inside, " << missed_grid << " missing the grid, "
                                  << corner_cases << " cells touched only (corners, edges); "
                                  << grid_tests << " primitive tests against brute force's "
