@@ -3,7 +3,8 @@
 // centred in cells (and sometimes a box over two cells), all at mid-depth z = 0.5, and a ray in
 // the plane z = 0.5 (d_z = 0) whose direction components are 0, ±0.5, ±1 or ±2 and whose
 // origin has quarter coordinates — outside the grid, inside it, or missing it. A ray through an
-// exact lattice corner is drawn again: which cell comes next there is a tie, not a skill.
+// exact lattice corner, along a cell plane or from a cell plane inside the grid is drawn again:
+// which cell comes next there is a tie rule, not a skill.
 #include <cmath>
 
 #include "accel/uniform_grid.hpp"
@@ -21,8 +22,13 @@ double grid_exam_component(Rng& rng) {
 
 // Whether the ray meets an x plane and a y plane of the lattice at the same t inside the grid
 // (a corner), for t ≥ 0.
-bool grid_exam_corner(const UniformGrid::Input& in) {
+// Also a convention rather than a skill: a ray running along a cell plane (d_i = 0, E_i whole),
+// or starting on one inside the grid.
+bool grid_exam_tie(const UniformGrid::Input& in) {
     const glm::dvec3 E = in.origin, d = in.direction;
+    const bool inside = E.x >= 0 && E.x <= 4 && E.y >= 0 && E.y <= 4;
+    for (int a = 0; a < 2; ++a)
+        if ((d[a] == 0 || inside) && E[a] == std::floor(E[a])) return true;
     if (d.x == 0 || d.y == 0) return false;
     for (int i = 0; i <= 4; ++i)
         for (int j = 0; j <= 4; ++j) {
@@ -74,7 +80,7 @@ UniformGrid::Input UniformGrid::exam_input(Rng& rng) {
             if (in.origin.x >= 0 && in.origin.x <= 4 && in.origin.y >= 0 && in.origin.y <= 4)
                 in.origin -= in.direction;
         }
-        if (!grid_exam_corner(in) || attempt > 50) return in;
+        if (!grid_exam_tie(in) || attempt > 50) return in;
     }
 }
 

@@ -826,6 +826,8 @@ TEST_CASE("uniform-grid: exam problems — 4 × 4 grids, no corner ties, graded 
         missed_grid += !r.entered;
         inside += r.entered && r.t_start == 0;
         zero += in.direction.x == 0 || in.direction.y == 0;
+        for (int k = 0; k < 2; ++k)  // never along a cell plane (a tie rule, not a skill)
+            if (in.direction[k] == 0) CHECK(in.origin[k] != std::floor(in.origin[k]));
         for (const auto& s : t.steps) beyond += s.event == "hit-beyond-exit";
         // No step ties two planes (a lattice corner): every exit is one axis's t_max alone.
         for (const auto& s : t.steps) {
