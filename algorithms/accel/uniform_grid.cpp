@@ -494,7 +494,7 @@ std::string axis_setup(const State& s, int a) {
                " = ∞ (the ray never steps on " + A + ")";
     const double plane = g.plane(a, w.cell[a] + (d > 0 ? 1 : 0));
     return A + ": step " + (d > 0 ? "+1" : "−1") + ", t_max_" + A + " = (" + num(plane) + " − " +
-           sub(in.origin[a]) + ")/" + num(d) + " = " + tn(w.t_max[a]) + ", t_delta_" + A + " = " +
+           sub(in.origin[a]) + ")/" + sub(d) + " = " + tn(w.t_max[a]) + ", t_delta_" + A + " = " +
            num(g.size[a]) + "/" + num(std::fabs(d)) + " = " + tn(w.t_delta[a]);
 }
 
@@ -619,6 +619,15 @@ void narrate_cell(const State& s, StepInfo& info) {
                     " by " + (w.step[a] > 0 ? "+1" : "−1") + " to cell " + cell_text(w.cell) +
                     ", and t_max_" + A + " = " + tn(w.t_enter) + " + " + tn(w.t_delta[a]) + " = " +
                     tn(w.t_max[a]) + ".";
+            std::string tied;
+            for (int b = 0; b < 3; ++b)
+                if (b != a && w.t_max[b] == w.t_enter)
+                    tied += std::string(tied.empty() ? "" : " and ") + "t_max_" + kAxis[b];
+            if (!tied.empty())
+                text += " A tie: " + tied + " = " + tn(w.t_enter) +
+                        " too — the ray passes through a lattice edge or corner there. The tie "
+                        "goes to x before y before z, so the next cell is visited for zero length "
+                        "(it only touches the ray at that point).";
             info.math =
                 "t_{max} = (" + tt(w.t_max.x) + ", " + tt(w.t_max.y) + ", " + tt(w.t_max.z) + ")";
             break;

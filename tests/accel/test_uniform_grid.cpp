@@ -412,6 +412,8 @@ TEST_CASE("uniform-grid: the 4 × 4 exam cases worked by hand", "[accel][uniform
         const auto t = traced(grid4({sphere({0.5, 1.5, 0.5}, 0.25)}, {2, 1.5, 0.5}, {-1, 0, 0}));
         CHECK(t.result.cells_visited == Cells{{1, 1, 0}, {0, 1, 0}});
         CHECK(t.result.t == 1.25);
+        CHECK_THAT(first(t, "start-inside").narration,
+                   Catch::Contains("t_max_x = (1 − 2)/(-1) = 1"));
     }
     SECTION("a ray that misses the grid: no cell, no test") {
         const auto t = traced(grid4({sphere({0.5, 0.5, 0.5}, 0.25)}, {-1, 5, 0.5}, {1, 0, 0}));
@@ -431,6 +433,8 @@ TEST_CASE("uniform-grid: the 4 × 4 exam cases worked by hand", "[accel][uniform
         const auto t = traced(grid4({sphere({3.5, 0.5, 0.5}, 0.25)}, {-1, -1, 0.5}, {1, 1, 0}));
         CHECK(t.result.cells_visited ==
               Cells{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}, {2, 2, 0}, {3, 2, 0}, {3, 3, 0}});
+        CHECK_THAT(t.steps[2].narration,
+                   Catch::Contains("A tie: t_max_y = 2 too") && Catch::Contains("zero length"));
     }
     SECTION("3D: a 2 × 2 × 2 grid, the ray along the diagonal plane") {
         UniformGrid::Input in;
