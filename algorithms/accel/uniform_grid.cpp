@@ -480,7 +480,7 @@ void narrate_place(const State& s, StepInfo& info) {
     info.vars = {{"primitive", static_cast<long long>(p)},
                  {"candidates", static_cast<long long>(pl.candidates)},
                  {"kept", static_cast<long long>(pl.kept)},
-                 {"cell size", vec(g.size)}};
+                 {"s", vec(g.size)}};
 }
 
 std::string axis_setup(const State& s, int a) {
