@@ -488,6 +488,15 @@ TEST_CASE("uniform-grid: the lesson's presets run to the plain function's result
           false);
     CHECK(UniformGrid::trace(preset("through lattice corners: a tie, x steps first"))
               .cells_visited.size() == 7);
+    // 3D: the triangle reaches into [1, 2, 2] but is met beyond its exit (t = 4.444 > 4); the
+    // sphere in [2, 2, 2] is nearer.
+    const auto d3 = traced(
+        preset("3D: a 4 × 4 × 4 grid over spheres, boxes and a triangle (the scene's bounds)"));
+    CHECK(walk_events(d3) ==
+          std::vector<std::string>{"enter", "empty-cell", "empty-cell", "hit-beyond-exit", "hit"});
+    CHECK(d3.result.cells_visited == Cells{{0, 1, 2}, {1, 1, 2}, {1, 2, 2}, {2, 2, 2}});
+    CHECK(d3.result.primitive == 0);
+    CHECK(d3.result.mailbox_skips == 1);
     for (const auto& p : lesson().presets) {
         CAPTURE(p.name);
         const auto in = input_of(p.input);

@@ -1,7 +1,7 @@
 // Acceleration: the uniform grid (uniform-grid) — the plain function (build and walk) vs the
 // state machine run to the end on the same 1,000 random scenes of 40 small primitives in a
-// 6 × 6 × 6 grid, one ray each (a fifth from inside, some with a component 0), and one
-// narrated step plus its picture through the registry.
+// 6 × 6 × 6 grid, one ray each (a fifth from inside, some with a component 0); the walk alone
+// against brute force; and one narrated step plus its picture through the registry.
 #include <benchmark/benchmark.h>
 
 #include "accel/uniform_grid.hpp"
@@ -73,6 +73,40 @@ void BM_UniformGrid_StateMachine(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<long>(inputs.size()));
 }
 BENCHMARK(BM_UniformGrid_StateMachine)->Unit(benchmark::kMillisecond);
+
+// The walk alone through grids built once, against brute force on the same rays: what the
+// grid saves per ray once it is built.
+void BM_UniformGrid_WalkOnly(benchmark::State& state) {
+    const auto& inputs = grid_inputs();
+    static const std::vector<cg::Shared<UniformGrid::Grid>> grids = [&] {
+        std::vector<cg::Shared<UniformGrid::Grid>> g;
+        for (const auto& in : inputs) g.emplace_back(UniformGrid::build(*in));
+        return g;
+    }();
+    for (auto _ : state) {
+        double sum = 0;
+        for (std::size_t i = 0; i < inputs.size(); ++i)
+            sum += UniformGrid::trace(*inputs[i], grids[i]).t;
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long>(inputs.size()));
+}
+BENCHMARK(BM_UniformGrid_WalkOnly)->Unit(benchmark::kMillisecond);
+
+void BM_UniformGrid_BruteForce(benchmark::State& state) {
+    const auto& inputs = grid_inputs();
+    for (auto _ : state) {
+        double sum = 0;
+        for (const auto& in : inputs) {
+            double t = 0;
+            sum += UniformGrid::brute_force(*in, t);
+            sum += t < UniformGrid::kInf ? t : 0;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long>(inputs.size()));
+}
+BENCHMARK(BM_UniformGrid_BruteForce)->Unit(benchmark::kMillisecond);
 
 void BM_UniformGrid_StepAndPicture(benchmark::State& state) {
     cg::bench::step_and_picture(state, "uniform-grid");
