@@ -1,4 +1,5 @@
 // Sections: [helpers] [spec] [validate] [advance] [narrate] [result and supersample] [draw]
+// [study] (the convergence study: its experiment, validation, steps and plot)
 #include "sampling/supersampling.hpp"
 
 #include <algorithm>
@@ -26,6 +27,8 @@ enum Line {
     kLineEstimate,
     kLineExact,
     kLineError,
+    kLineStudyPoint,
+    kLineStudySlopes,
 };
 
 double orient(dvec2 a, dvec2 b, dvec2 c) {
@@ -81,6 +84,8 @@ const Spec& Supersampling::spec() {
             "estimate ← Σ w_k v_k / Σ w_k",
             "exact ← ∫∫ w f / ∫∫ w over the pixel   ▷ area sampling: the covered polygon",
             "error ← estimate − exact",
+            "study: for each pattern, each N:  e ← √(mean over the edges of error²)",
+            "slope ← least squares of log e against log N, over N ≥ 4",
         },
         {
             {"pattern", "the sample positions in the pixel, and how the pattern made them"},
@@ -88,6 +93,8 @@ const Spec& Supersampling::spec() {
             {"outside", "a sample outside the scene: value 0, and its weight"},
             {"estimate", "the filtered average of the samples, Σ w v / Σ w"},
             {"exact", "area sampling: the covered part of the pixel, its weighted area, the error"},
+            {"point", "a study: one pattern's RMS error at one N, over all the edges"},
+            {"slopes", "a study: each pattern's slope of log error against log N"},
         },
     };
     return spec;
@@ -96,6 +103,7 @@ const Spec& Supersampling::spec() {
 // ---- [validate] -----------------------------------------------------------------------------
 
 void Supersampling::validate(const Input& in) {
+    if (in.is_study) return validate_study(in);
     if (in.samples < 1 || in.samples > kMaxSamples)
         throw InputError("samples", "must be between 1 and " + std::to_string(kMaxSamples) +
                                         " (got " + std::to_string(in.samples) + ")");
@@ -165,6 +173,15 @@ Supersampling::State Supersampling::start(const Input& in) {
     State s;
     s.in = Shared<Input>(in);
     s.radius = radius_of(in);
+    if (in.is_study) {
+        s.phase = s.last = Phase::Point;
+        std::vector<StudyPoint> measured;
+        measured.reserve(in.study.patterns.size() * in.study.samples.size());
+        for (Pattern p : in.study.patterns)
+            for (int n : in.study.samples) measured.push_back({p, n, study_rms(in, p, n)});
+        s.study.reserve(measured.size());
+        s.measured = Shared<std::vector<StudyPoint>>(std::move(measured));
+    }
     return s;
 }
 
@@ -212,6 +229,9 @@ void Supersampling::advance(State& s) {
                                  0.0, 1.0);
             s.phase = Phase::Done;
             return;
+        case Phase::Point:
+        case Phase::Slopes:
+            return advance_study(s);
         case Phase::Done:
             return;
     }
@@ -387,6 +407,7 @@ void fill_vars(const State& s, StepInfo& info) {
 
 void Supersampling::narrate(const State& s, StepInfo& info) {
     info.math.clear();
+    if (s.in->is_study) return narrate_study(s, info);
     switch (s.last) {
         case Phase::Pattern:
             narrate_pattern(s, info);
@@ -398,6 +419,8 @@ void Supersampling::narrate(const State& s, StepInfo& info) {
             narrate_estimate(s, info);
             break;
         case Phase::Exact:
+        case Phase::Point:
+        case Phase::Slopes:
         case Phase::Done:
             narrate_exact(s, info);
             break;
@@ -422,6 +445,9 @@ Supersampling::Result Supersampling::result(const State& s) {
     r.error = s.estimate - s.exact;
     r.radius = s.radius;
     r.covered = s.covered;
+    r.study = s.study;
+    r.slopes = s.slopes;
+    r.is_study = s.in->is_study;
     return r;
 }
 
@@ -454,6 +480,7 @@ Supersampling::Result Supersampling::supersample(const Input& in) {
 // with, for Poisson, its exclusion circle. From the exact step on, the covered polygon (green).
 void Supersampling::draw(const State& s, Scene& scene) {
     const Input& in = *s.in;
+    if (in.is_study) return draw_study(s, scene);
     const double x0 = in.i, y0 = in.j;
     const Style grid{Role::Construction, 1.0f, false};
     for (int k = -1; k <= 2; ++k) {
@@ -528,6 +555,294 @@ void Supersampling::draw(const State& s, Scene& scene) {
         if (s.phase == Phase::Done)
             t += ", exact " + num(s.exact, 4) + ", error " + num(s.estimate - s.exact, 3);
         scene.labels.push_back({{x0 + 0.02, y0 + 1.06}, t, {Role::Neutral}});
+    }
+}
+
+// ---- [study] --------------------------------------------------------------------------------
+
+Supersampling::Input Supersampling::study_trial(const Input& in, Pattern pattern, int samples,
+                                                int t) {
+    Rng rng(50000 + static_cast<std::uint64_t>(t));
+    const double angle = in.study.near_axis ? rng.uniform(-1, 1) : rng.uniform(0, 360);
+    Input trial;
+    trial.pattern = pattern;
+    trial.samples = samples;
+    trial.filter = in.filter;
+    trial.scene.kind = RegionKind::Edge;
+    trial.scene.point.x = rng.uniform(0, 1);
+    trial.scene.point.y = rng.uniform(0, 1);
+    trial.scene.angle_deg = angle;
+    trial.seed = in.seed * kMaxStudyEdges + static_cast<std::uint64_t>(t);
+    return trial;
+}
+
+double Supersampling::study_rms(const Input& in, Pattern pattern, int samples) {
+    double sum = 0;
+    for (int t = 0; t < in.study.edges; ++t) {
+        const double e = supersample(study_trial(in, pattern, samples, t)).error;
+        sum += e * e;
+    }
+    return std::sqrt(sum / in.study.edges);
+}
+
+double Supersampling::study_slope(const std::vector<StudyPoint>& points, Pattern pattern) {
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const StudyPoint& q : points) {
+        if (q.pattern != pattern || q.samples < 4) continue;
+        const double x = std::log10(double(q.samples));
+        const double y = std::log10(std::max(q.rms_error, 1e-15));  // an exact 0 stays finite
+        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double d = n * sxx - sx * sx;
+    return n < 2 || d <= 0 ? 0.0 : (n * sxy - sx * sy) / d;
+}
+
+Supersampling::Result Supersampling::run_study(const Input& in) {
+    Result r;
+    r.is_study = true;
+    for (Pattern p : in.study.patterns)
+        for (int n : in.study.samples) r.study.push_back({p, n, study_rms(in, p, n)});
+    for (Pattern p : in.study.patterns) r.slopes.push_back({p, study_slope(r.study, p)});
+    return r;
+}
+
+void Supersampling::validate_study(const Input& in) {
+    const Study& st = in.study;
+    if (st.patterns.empty())
+        throw InputError("study.patterns", "must list at least one pattern (got none)");
+    for (std::size_t a = 0; a < st.patterns.size(); ++a)
+        for (std::size_t b = 0; b < a; ++b)
+            if (st.patterns[a] == st.patterns[b])
+                throw InputError(
+                    "study.patterns[" + std::to_string(a) + "]",
+                    std::string("repeats \"") + sampling::pattern_id(st.patterns[a]) + "\"");
+    const std::size_t m = st.samples.size();
+    if (m < 2 || m > std::size_t(kMaxStudyCounts))
+        throw InputError("study.samples", "must list between 2 and " +
+                                              std::to_string(kMaxStudyCounts) +
+                                              " sample counts (got " + std::to_string(m) + ")");
+    int large = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+        const int n = st.samples[k];
+        const std::string field = "study.samples[" + std::to_string(k) + "]";
+        if (n < 1 || n > kMaxStudySamples)
+            throw InputError(field, "must be between 1 and " + std::to_string(kMaxStudySamples) +
+                                        " (got " + std::to_string(n) + ")");
+        for (Pattern p : st.patterns)
+            if (sampling::is_grid(p) && sampling::grid_side(n) == 0)
+                throw InputError(
+                    field, std::string("must be a square number n × n (1, 4, 9, 16, …) for "
+                                       "the ") +
+                               sampling::pattern_id(p) + " pattern (got " + std::to_string(n) +
+                               ")");
+        if (k > 0 && n <= st.samples[k - 1])
+            throw InputError(field, "must be larger than the count before it (got " +
+                                        std::to_string(n) + " after " +
+                                        std::to_string(st.samples[k - 1]) + ")");
+        large += n >= 4;
+    }
+    if (large < 2)
+        throw InputError("study.samples",
+                         "must hold at least two counts of 4 or more, to fit a slope (got " +
+                             std::to_string(large) + ")");
+    if (st.edges < 1 || st.edges > kMaxStudyEdges)
+        throw InputError("study.edges", "must be between 1 and " + std::to_string(kMaxStudyEdges) +
+                                            " (got " + std::to_string(st.edges) + ")");
+    long long sum = 0;
+    for (int n : st.samples) sum += n;
+    if (st.edges * sum > kMaxStudyWork)
+        throw InputError("study.edges", "times the sample counts' sum (" + std::to_string(sum) +
+                                            ") must be at most " + std::to_string(kMaxStudyWork) +
+                                            ", so that a run stays short (got " +
+                                            std::to_string(st.edges) + " × " + std::to_string(sum) +
+                                            " = " + std::to_string(st.edges * sum) + ")");
+}
+
+void Supersampling::advance_study(State& s) {
+    const Study& st = s.in->study;
+    s.last = s.phase;
+    if (s.phase == Phase::Point) {  // One point: a pattern's RMS error at one N
+        s.study.push_back((*s.measured)[s.study.size()]);
+        if (s.study.size() == st.patterns.size() * st.samples.size()) s.phase = Phase::Slopes;
+    } else if (s.phase == Phase::Slopes) {  // The slopes, fitted
+        for (Pattern p : st.patterns) s.slopes.push_back({p, study_slope(s.study, p)});
+        s.phase = Phase::Done;
+    }
+}
+
+namespace {
+
+std::string angles_text(const Supersampling::Study& st) {
+    return st.near_axis ? "within 1° of the x axis" : "at any angle";
+}
+
+// What each pattern's slope means.
+std::string slope_meaning(Pattern p, bool near_axis) {
+    switch (p) {
+        case Pattern::Random:
+            return "the mean of N independent coin flips, so about −½";
+        case Pattern::Jittered:
+            return "only the cells the edge crosses (about √N of them) are uncertain, so about −¾";
+        case Pattern::Poisson:
+            return "evenly spread like jittered but not stratified, so between −½ and −¾";
+        case Pattern::Regular:
+            return near_axis ? "on edges nearly along its rows a whole row of samples flips at "
+                               "once, so only about −½, and the error is the same for every "
+                               "seed: structured, not noise"
+                             : "the edge's random angle breaks the alignment with its rows, so "
+                               "about as steep as jittered; still each edge's error is fixed, "
+                               "the same for every seed";
+    }
+    return "";
+}
+
+}  // namespace
+
+void Supersampling::narrate_study(const State& s, StepInfo& info) {
+    const Input& in = *s.in;
+    const Study& st = in.study;
+    const std::string edges = std::to_string(st.edges) + " edges " + angles_text(st);
+    if (s.last == Phase::Point) {
+        const StudyPoint& q = s.study.back();
+        const std::string name = sampling::pattern_id(q.pattern);
+        info.event = "point";
+        info.line = kLineStudyPoint;
+        info.narration = name + ", N = " + std::to_string(q.samples) + ": RMS error " +
+                         num(q.rms_error, 3) + " over " + edges + " (" +
+                         sampling::filter_id(in.filter) + " filter, pixel (0, 0))";
+        info.vars = {{"pattern", name},
+                     {"N", static_cast<long long>(q.samples)},
+                     {"edges", static_cast<long long>(st.edges)},
+                     {"rms_error", q.rms_error}};
+        const std::size_t k = s.study.size() - 1;
+        if (k % st.samples.size() != 0) {  // the step from the previous N of this pattern
+            const StudyPoint& prev = s.study[k - 1];
+            const double local =
+                std::log10(std::max(q.rms_error, 1e-15) / std::max(prev.rms_error, 1e-15)) /
+                std::log10(double(q.samples) / prev.samples);
+            info.narration += "; from N = " + std::to_string(prev.samples) + " it fell ×" +
+                              num(q.rms_error / std::max(prev.rms_error, 1e-300), 3) +
+                              ", a slope of " + num(local, 3) + " on this stretch";
+            info.vars.push_back({"local_slope", local});
+        }
+        info.narration += ".";
+        info.math = "e_{" + tex(q.samples) + "} = \\sqrt{\\tfrac{1}{" + tex(st.edges) +
+                    "}\\sum (\\hat I - I)^2} = " + tex(q.rms_error, 3);
+        return;
+    }
+    info.event = "slopes";
+    info.line = kLineStudySlopes;
+    std::string t = "Slopes of log error against log N, least squares over N ≥ 4, " + edges + ":";
+    info.vars.clear();
+    for (const Slope& sl : s.slopes) {
+        const std::string name = sampling::pattern_id(sl.pattern);
+        t += " " + name + " " + num(sl.slope, 2) + " — " + slope_meaning(sl.pattern, st.near_axis) +
+             ";";
+        info.vars.push_back({"slope_" + name, sl.slope});
+    }
+    t.back() = '.';
+    info.narration = t;
+    info.math = "e \\propto N^{s}:\\; s = \\frac{\\Delta \\log e}{\\Delta \\log N}";
+}
+
+namespace {
+
+Role pattern_role(Pattern p) {
+    switch (p) {
+        case Pattern::Regular:
+            return Role::Discarded;
+        case Pattern::Random:
+            return Role::Leaving;
+        case Pattern::Jittered:
+            return Role::Kept;
+        case Pattern::Poisson:
+            return Role::Window;
+    }
+    return Role::Neutral;
+}
+
+std::string error_tick(int decade) {
+    switch (decade) {
+        case 0:
+            return "1";
+        case -1:
+            return "0.1";
+        case -2:
+            return "0.01";
+        case -3:
+            return "0.001";
+        default:
+            return "1e" + std::to_string(decade);
+    }
+}
+
+}  // namespace
+
+// The log-log plot: x = log10 N over the counts studied, y = log10 RMS error from 1 down to
+// 0.001 (further if the errors go lower), kW × kH world units. Axes with the counts and the
+// decades as ticks; guide lines of slope −½ and −¾ from 1 at the first N; each pattern's
+// points so far joined by a polyline in its colour, named at its end; the newest point larger,
+// with its value. (The slopes are in the last step's narration and variables.)
+void Supersampling::draw_study(const State& s, Scene& scene) {
+    constexpr double kW = 4.0, kH = 3.0;
+    const Study& st = s.in->study;
+    const double lx0 = std::log10(double(st.samples.front()));
+    const double lx1 = std::log10(double(st.samples.back()));
+    double ly0 = -3;
+    for (const StudyPoint& q : s.study)
+        ly0 = std::min(ly0, std::floor(std::log10(std::max(q.rms_error, 1e-6))));
+    const double ly1 = 0;
+    auto at = [&](double n, double e) {
+        return dvec2(kW * (std::log10(n) - lx0) / (lx1 - lx0),
+                     kH * (std::log10(std::max(e, 1e-6)) - ly0) / (ly1 - ly0));
+    };
+
+    const Style axis{Role::Neutral, 1.5f};
+    const Style grid{Role::Construction, 1.0f, true};
+    scene.segments.push_back({{0, 0}, {kW, 0}, "", axis, false});
+    scene.segments.push_back({{0, 0}, {0, kH}, "", axis, false});
+    for (int n : st.samples) {
+        const double x = at(n, 1).x;
+        scene.segments.push_back({{x, 0}, {x, -0.06}, "", axis, false});
+        scene.labels.push_back({{x, -0.2}, std::to_string(n), {Role::Neutral}});
+    }
+    for (int d = int(ly0); d <= 0; ++d) {
+        const double y = at(1, std::pow(10.0, d)).y;
+        scene.segments.push_back({{-0.06, y}, {0, y}, "", axis, false});
+        if (d < 0) scene.segments.push_back({{0, y}, {kW, y}, "", grid, false});
+        scene.labels.push_back({{-0.3, y}, error_tick(d), {Role::Neutral}});
+    }
+    scene.labels.push_back({{kW / 2, -0.7}, "samples per pixel N (log scale)", {Role::Neutral}});
+    scene.labels.push_back({{0.9, kH + 0.25},
+                            "RMS error over " + std::to_string(st.edges) + " edges " +
+                                angles_text(st) + " (log scale)",
+                            {Role::Neutral}});
+
+    // Guides: slopes −½ and −¾ from error 1 at the first count, above the data (every pattern
+    // starts below 1), so a pattern's line running parallel to a guide has its slope.
+    const double n0 = st.samples.front(), n1 = st.samples.back();
+    for (const auto& [power, name] : {std::pair{0.5, "slope −½"}, std::pair{0.75, "slope −¾"}}) {
+        const dvec2 a = at(n0, 1.0), b = at(n1, std::pow(n1 / n0, -power));
+        scene.segments.push_back({a, b, "", {Role::Construction, 1.5f, true}, false});
+        const double along = power < 0.6 ? 0.6 : 0.3;  // apart, where the guides diverge
+        scene.labels.push_back({a + (b - a) * along + dvec2(0, 0.15), name, {Role::Neutral}});
+    }
+
+    const std::size_t m = st.samples.size();
+    for (std::size_t a = 0; a * m < s.study.size(); ++a) {
+        const std::size_t first = a * m, last = std::min(s.study.size(), first + m);
+        const Pattern p = s.study[first].pattern;
+        const Style style{pattern_role(p), 2.5f};
+        std::vector<dvec2> line;
+        for (std::size_t k = first; k < last; ++k) {
+            const StudyPoint& q = s.study[k];
+            line.push_back(at(q.samples, q.rms_error));
+            const bool newest = k + 1 == s.study.size() && s.last == Phase::Point;
+            scene.points.push_back(
+                {line.back(), newest ? num(q.rms_error, 3) : "", style, newest ? 6.0f : 4.0f});
+        }
+        if (line.size() > 1) scene.polygons.push_back({line, style, false, false});
+        scene.labels.push_back({line.back() + dvec2(0.12, 0), sampling::pattern_id(p), style});
     }
 }
 

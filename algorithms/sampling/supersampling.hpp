@@ -36,6 +36,19 @@ struct Supersampling {
     static constexpr int kMaxSamples = 1024;
     static constexpr int kMaxPolygon = 256;        // polygon vertices
     static constexpr double kMaxCoordinate = 1e6;  // |coordinates| and |pixel indices|
+    static constexpr int kMaxStudyEdges = 1000;    // trials per point
+    static constexpr int kMaxStudySamples = 256;   // the largest N in a study
+    static constexpr int kMaxStudyCounts = 8;      // how many values of N
+    static constexpr int kMaxStudyWork = 204800;   // edges × Σ N, per pattern: a run under ~1 s
+
+    // The convergence study: RMS error against N, per pattern, over random edges.
+    struct Study {
+        std::vector<sampling::Pattern> patterns;  // distinct, in the order measured
+        std::vector<int> samples;                 // increasing; n² for regular and jittered
+        int edges = 400;                          // trials per (pattern, N) point
+        bool near_axis = false;                   // edges within 1° of the x axis, else any angle
+        bool operator==(const Study&) const = default;
+    };
 
     struct Input {
         sampling::Pattern pattern = sampling::Pattern::Jittered;
@@ -45,7 +58,21 @@ struct Supersampling {
         int i = 0, j = 0;   // the pixel
         sampling::Region scene;
         std::uint64_t seed = 1;
+        bool is_study = false;  // a convergence study (study, filter, seed) instead of a pixel
+        Study study;
         bool operator==(const Input&) const = default;
+    };
+
+    struct StudyPoint {
+        sampling::Pattern pattern = sampling::Pattern::Regular;
+        int samples = 0;
+        double rms_error = 0;  // √(mean over the edges of (estimate − exact)²)
+        bool operator==(const StudyPoint&) const = default;
+    };
+    struct Slope {
+        sampling::Pattern pattern = sampling::Pattern::Regular;
+        double slope = 0;  // least squares of log10 error against log10 N, over N ≥ 4
+        bool operator==(const Slope&) const = default;
     };
 
     struct Sample {
@@ -63,10 +90,13 @@ struct Supersampling {
         double error = 0;                 // estimate − exact
         double radius = 0;                // poisson: the radius used (else 0)
         std::vector<glm::dvec2> covered;  // the covered part of the pixel (counter-clockwise)
+        std::vector<StudyPoint> study;    // a study: the points, pattern by pattern
+        std::vector<Slope> slopes;        // a study: one per pattern
+        bool is_study = false;            // a study's result (the fields above it are unused)
         bool operator==(const Result&) const = default;
     };
 
-    enum class Phase : std::uint8_t { Pattern, Sample, Estimate, Exact, Done };
+    enum class Phase : std::uint8_t { Pattern, Sample, Estimate, Exact, Point, Slopes, Done };
 
     struct State {
         Shared<Input> in;
@@ -81,6 +111,11 @@ struct Supersampling {
         std::vector<glm::dvec2> covered;
         double covered_integral = 0;  // ∫∫ w over the covered part
         double exact = 0;
+        std::vector<StudyPoint> study;  // a study: the points shown so far
+        std::vector<Slope> slopes;      // a study: after the last step
+        // A study's points, all measured in start (0.1 s for the lesson's studies): each step
+        // then shows one, so that a step stays instant (one point is 400 × N supersamples).
+        Shared<std::vector<StudyPoint>> measured;
         bool operator==(const State&) const = default;
     };
 
@@ -92,7 +127,8 @@ struct Supersampling {
     static Result result(const State& s);
     static void draw(const State& s, Scene& scene);
     static std::size_t bytes(const State& s) {
-        return heap_bytes(s.points) + heap_bytes(s.samples) + heap_bytes(s.covered);
+        return heap_bytes(s.points) + heap_bytes(s.samples) + heap_bytes(s.covered) +
+               heap_bytes(s.study) + heap_bytes(s.slopes);
     }
 
     static Input exam_input(Rng& rng);
@@ -104,9 +140,26 @@ struct Supersampling {
     // The radius poisson uses for this input (else 0).
     static double radius_of(const Input& in);
 
+    // The study's experiment, one definition for the algorithm and the tests: trial t (0-based)
+    // of the point (pattern, N) supersamples pixel (0, 0) with in.filter, against an
+    // edge through a uniform point of the pixel at a uniform angle in [0°, 360°) (near-axis:
+    // [−1°, 1°)) from Rng(50000 + t) — the same edges for every seed — with the pattern's seed
+    // in.seed · kMaxStudyEdges + t.
+    static Input study_trial(const Input& in, sampling::Pattern pattern, int samples, int t);
+    // The RMS of supersample(study_trial(…)).error over the in.study.edges trials.
+    static double study_rms(const Input& in, sampling::Pattern pattern, int samples);
+    // The least-squares slope of log10 rms against log10 N over the points with N ≥ 4.
+    static double study_slope(const std::vector<StudyPoint>& points, sampling::Pattern pattern);
+    // The whole study in one straight-line function.
+    static Result run_study(const Input& in);
+
   private:
     static void advance(State& s);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
+    static void validate_study(const Input& in);
+    static void advance_study(State& s);
+    [[gnu::cold]] static void narrate_study(const State& s, StepInfo& info);
+    static void draw_study(const State& s, Scene& scene);
 };
 
 }  // namespace cg

@@ -1,7 +1,8 @@
 // Aliasing and anti-aliasing, each state machine run to the end vs its plain function: sampling
 // 1,000 random 1D signals (1 to 3 sines, about 20 samples, linear and sinc reconstruction) and a
 // 32 × 32 zone plate with 16 jittered samples per pixel; supersampling 2,000 random pixels with
-// 16 jittered samples, and with Poisson dart throwing; one narrated step plus its picture each.
+// 16 jittered samples, and with Poisson dart throwing; one narrated step plus its picture each,
+// and for the convergence study a step (one point: 400 supersamples) plus its plot, and the plot.
 // Distribution ray tracing: rays per second (items) with 16 samples per pixel — the reference
 // scene at 160 × 120 (anti-aliasing only), the soft-shadow scene (a disc light of 16 shadow rays)
 // and the depth-of-field scene, plain on one and two threads and the state machine pixel by
@@ -178,6 +179,27 @@ void BM_Supersampling_StepAndPicture(benchmark::State& state) {
     cg::bench::step_and_picture(state, "supersampling");
 }
 BENCHMARK(BM_Supersampling_StepAndPicture)->Unit(benchmark::kMicrosecond);
+
+// The convergence study: a step measures one (pattern, N) point over 400 edges, so it costs
+// 400 supersamples; the picture alone (the plot of the finished study) is the viewer's part.
+void BM_Supersampling_Study_StepAndPicture(benchmark::State& state) {
+    cg::bench::step_and_picture(state, "supersampling", [](cg::json& in) {
+        in = cg::json{{"study", cg::json::object()}};
+    });
+}
+BENCHMARK(BM_Supersampling_Study_StepAndPicture)->Unit(benchmark::kMicrosecond);
+void BM_Supersampling_Study_Picture(benchmark::State& state) {
+    const cg::Registry registry = cg::builtin_registry();
+    auto run = registry.find("supersampling")->create(cg::json{{"study", cg::json::object()}});
+    while (!run->done()) run->step(nullptr);
+    cg::Scene scene;
+    for (auto _ : state) {
+        scene.clear();
+        run->draw(scene);
+        benchmark::DoNotOptimize(scene.labels.data());
+    }
+}
+BENCHMARK(BM_Supersampling_Study_Picture)->Unit(benchmark::kMicrosecond);
 
 // ---- distribution ray tracing ----------------------------------------------------------------
 

@@ -3,8 +3,9 @@
 // a small object lost between samples, weighted filters); the exact coverage against an
 // independent reference (vertical slices in long double) on 4,000 random edges and polygons,
 // degenerate ones included; run-to-end == the plain function; the estimate recomputed from the
-// samples; the error of each pattern as the number of samples grows, over many pixels and seeds;
-// errors naming the field; determinism and the picture.
+// samples; the convergence study (the error of each pattern as the number of samples grows, over
+// many edges and seeds) against its own recomputation with the long-double reference, and the
+// course's claims about its slopes; errors naming the field; determinism and the pictures.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -357,62 +358,172 @@ TEST_CASE("supersampling: run to the end equals the plain function, and the esti
     }
 }
 
-// The course's claims, measured: over many pixels and seeds, the RMS error of each pattern
-// against the exact coverage as the number of samples grows.
+namespace {
+
+// The study, from its input.
+Supersampling::Input study_input(std::vector<Pattern> patterns, bool near_axis,
+                                 std::uint64_t seed = 1, int edges = 400,
+                                 std::vector<int> samples = {1, 4, 16, 64, 256}) {
+    Supersampling::Input in;
+    in.is_study = true;
+    in.study.patterns = std::move(patterns);
+    in.study.samples = std::move(samples);
+    in.study.edges = edges;
+    in.study.near_axis = near_axis;
+    in.seed = seed;
+    return in;
+}
+
+const int kCounts[] = {1, 4, 16, 64, 256};
+const std::vector<Pattern> kAllPatterns = {Pattern::Regular, Pattern::Random, Pattern::Jittered,
+                                           Pattern::Poisson};
+
+// The study's RMS errors again, box filter: the trials' edges and seeds from study_trial (the
+// one definition of the experiment), but the samples' values by the half-plane test written
+// out, the estimate as the fraction inside, and the exact value from the long-double slices.
+std::vector<double> recompute_study(const Supersampling::Input& in) {
+    std::vector<long double> exact(in.study.edges);
+    for (int t = 0; t < in.study.edges; ++t)
+        exact[t] = sampling_reference::exact(
+            Supersampling::study_trial(in, Pattern::Random, 1, t).scene, Filter::Box, 0, 0);
+    std::vector<double> out;
+    for (Pattern p : in.study.patterns)
+        for (int n : in.study.samples) {
+            long double sum = 0;
+            for (int t = 0; t < in.study.edges; ++t) {
+                const Supersampling::Input trial = Supersampling::study_trial(in, p, n, t);
+                const double r = p == Pattern::Poisson ? cg::sampling::default_radius(n) : 0;
+                const auto pts = cg::sampling::generate(p, n, trial.seed, r);
+                const dvec2 d = cg::sampling::edge_direction(trial.scene.angle_deg);
+                long double inside = 0;
+                for (const auto& q : pts) {
+                    const dvec2 v = q.p - trial.scene.point;
+                    inside += d.x * v.y - d.y * v.x >= 0 ? 1 : 0;
+                }
+                const long double e = inside / pts.size() - exact[t];
+                sum += e * e;
+            }
+            out.push_back(double(std::sqrt(sum / in.study.edges)));
+        }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("supersampling: the study's trials are the edges it documents",
+          "[sampling][supersampling][convergence]") {
+    for (bool near : {false, true})
+        for (int t : {0, 1, 17, 399}) {
+            const Supersampling::Input in = study_input(kAllPatterns, near, 3, 400, {4, 16});
+            const auto trial = Supersampling::study_trial(in, Pattern::Jittered, 16, t);
+            cg::Rng rng(50000 + t);
+            const double angle = near ? rng.uniform(-1, 1) : rng.uniform(0, 360);
+            CHECK(trial.scene.kind == RegionKind::Edge);
+            CHECK(trial.scene.angle_deg == angle);
+            CHECK(trial.scene.point.x == rng.uniform(0, 1));
+            CHECK(trial.scene.point.y == rng.uniform(0, 1));
+            CHECK((trial.i == 0 && trial.j == 0));
+            CHECK(trial.pattern == Pattern::Jittered);
+            CHECK(trial.samples == 16);
+            CHECK(trial.seed == 3u * Supersampling::kMaxStudyEdges + t);
+            CHECK_FALSE(trial.is_study);
+            Supersampling::validate(trial);
+        }
+}
+
+// The course's claims, measured by the study: over many edges and seeds, the RMS error of each
+// pattern against the exact coverage as the number of samples grows.
 TEST_CASE("supersampling: error against the number of samples, per pattern",
           "[sampling][supersampling][convergence]") {
-    const int kTrials = 400;
-    const int counts[] = {1, 4, 16, 64, 256};
-    const Pattern patterns[] = {Pattern::Regular, Pattern::Random, Pattern::Jittered,
-                                Pattern::Poisson};
-    auto rms = [&](Pattern p, int n, bool near_axis) {
-        double sum = 0;
-        for (int trial = 0; trial < kTrials; ++trial) {
-            cg::Rng rng(50000 + trial);
-            const double angle = near_axis ? rng.uniform(-1, 1) : rng.uniform(0, 360);
-            Supersampling::Input in =
-                input(p, n, Filter::Box, 0, 0, edge({rng.uniform(0, 1), rng.uniform(0, 1)}, angle),
-                      static_cast<std::uint64_t>(trial));
-            const auto r = Supersampling::supersample(in);
-            sum += r.error * r.error;
+    const auto any = Supersampling::run_study(study_input(kAllPatterns, false));
+    const auto near = Supersampling::run_study(study_input(kAllPatterns, true));
+    // The study's numbers are the RMS errors recomputed independently.
+    for (const auto* r : {&any, &near}) {
+        const auto ref = recompute_study(study_input(kAllPatterns, r == &near));
+        REQUIRE(r->study.size() == 20);
+        for (std::size_t k = 0; k < 20; ++k) {
+            CAPTURE(k, r->study[k].rms_error, ref[k]);
+            CHECK(r->study[k].pattern == kAllPatterns[k / 5]);
+            CHECK(r->study[k].samples == kCounts[k % 5]);
+            REQUIRE(std::fabs(r->study[k].rms_error - ref[k]) <= 1e-12);
         }
-        return std::sqrt(sum / kTrials);
-    };
+    }
     double table[2][4][5];
-    for (int axis = 0; axis < 2; ++axis)
-        for (int a = 0; a < 4; ++a)
-            for (int c = 0; c < 5; ++c) table[axis][a][c] = rms(patterns[a], counts[c], axis == 1);
+    for (int c = 0; c < 20; ++c) {
+        table[0][c / 5][c % 5] = any.study[c].rms_error;
+        table[1][c / 5][c % 5] = near.study[c].rms_error;
+    }
+    auto slope = [&](int axis, int a) {
+        const auto& r = axis ? near : any;
+        REQUIRE(r.slopes[a].pattern == kAllPatterns[a]);
+        return r.slopes[a].slope;
+    };
     for (int axis = 0; axis < 2; ++axis) {
         std::string line = axis ? "edges within 1° of the x axis:" : "edges at any angle:";
         for (int a = 0; a < 4; ++a) {
-            line += std::string("\n  ") + cg::sampling::pattern_id(patterns[a]);
+            line += std::string("\n  ") + cg::sampling::pattern_id(kAllPatterns[a]);
             for (int c = 0; c < 5; ++c) line += " " + std::to_string(table[axis][a][c]);
-            line += "  slope " + std::to_string(std::log(table[axis][a][4] / table[axis][a][1]) /
-                                                std::log(64.0));
+            line += "  slope " + std::to_string(slope(axis, a));
         }
         WARN(line);
     }
-    // The slopes of log(error) against log(N), from N = 4 to 256.
-    auto slope = [&](int axis, int a) {
-        return std::log(table[axis][a][4] / table[axis][a][1]) / std::log(64.0);
-    };
+    // The slopes are the least-squares fit over N ≥ 4, recomputed here.
+    for (int a = 0; a < 4; ++a) {
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        for (int c = 1; c < 5; ++c) {
+            const double x = std::log10(kCounts[c]), y = std::log10(table[0][a][c]);
+            sx += x, sy += y, sxx += x * x, sxy += x * y;
+        }
+        CHECK(slope(0, a) == Approx((4 * sxy - sx * sy) / (4 * sxx - sx * sx)).epsilon(1e-12));
+    }
     // Random: the error of a mean of N coin flips, ∝ N^−½.
     CHECK(slope(0, 1) == Approx(-0.5).margin(0.08));
     // Jittered: only the cells the edge crosses (∝ √N of them) are random, error ∝ N^−¾.
     CHECK(slope(0, 2) == Approx(-0.75).margin(0.1));
+    CHECK(slope(0, 2) < -0.65);
     CHECK(slope(0, 2) < slope(0, 1) - 0.15);
     for (int c = 2; c < 5; ++c) CHECK(table[0][2][c] < 0.6 * table[0][1][c]);
     // Poisson disc is about as good as jittered, far better than random.
     for (int c = 2; c < 5; ++c) CHECK(table[0][3][c] < 0.7 * table[0][1][c]);
     // Regular, on edges nearly along a grid row: a whole row of samples flips at once, so the
-    // error stays structured, ∝ 1/n = N^−½, and at 64 samples and more it is well above jittered's.
+    // error stays structured, ∝ 1/n = N^−½, flatter than jittered's, and at 64 samples and more
+    // it is well above jittered's.
     CHECK(slope(1, 0) == Approx(-0.5).margin(0.1));
+    CHECK(slope(1, 0) > slope(1, 2) + 0.15);
     for (int c = 3; c < 5; ++c) CHECK(table[1][0][c] > 1.5 * table[1][2][c]);
     // ... while on edges at any angle the regular grid is as good as jittered.
     CHECK(table[1][0][4] > 2 * table[0][0][4]);
     CHECK(slope(0, 0) < -0.65);
     // One sample: every pattern is a single point, error about √(c(1 − c)) on average.
     for (int a = 0; a < 4; ++a) CHECK(table[0][a][0] > 0.25);
+    // Structured, not noise: another seed leaves the regular grid's errors exactly as they were
+    // (the same edges, no randomness in the grid) and moves jittered's and random's.
+    const auto other = Supersampling::run_study(
+        study_input({Pattern::Regular, Pattern::Random, Pattern::Jittered}, true, 2));
+    for (int c = 0; c < 5; ++c) {
+        CHECK(other.study[c].rms_error == table[1][0][c]);
+        CHECK(other.study[5 + c].rms_error != table[1][1][c]);
+        CHECK(other.study[10 + c].rms_error != table[1][2][c]);
+    }
+    CHECK(other.slopes[0].slope == slope(1, 0));
+    CHECK(other.slopes[2].slope < -0.65);
+}
+
+TEST_CASE("supersampling: a study run to the end equals the plain function",
+          "[sampling][supersampling][convergence]") {
+    for (std::uint64_t seed : {0u, 5u}) {
+        const auto in =
+            study_input({Pattern::Poisson, Pattern::Jittered}, seed == 5, seed, 37, {1, 4, 9, 36});
+        Supersampling::validate(in);
+        const auto r = cg::run_to_end<Supersampling>(Supersampling::start(in));
+        CHECK(r == Supersampling::run_study(in));
+        CHECK(r.is_study);
+        REQUIRE(r.study.size() == 8);
+        REQUIRE(r.slopes.size() == 2);
+        for (std::size_t k = 0; k < 8; ++k)
+            CHECK(r.study[k].rms_error ==
+                  Supersampling::study_rms(in, r.study[k].pattern, r.study[k].samples));
+    }
 }
 
 TEST_CASE("supersampling: errors name the field", "[sampling][supersampling][errors]") {
@@ -462,6 +573,55 @@ TEST_CASE("supersampling: errors name the field", "[sampling][supersampling][err
         error_of(
             R"({"pattern": "random", "samples": 4, "pixel": [0, 0], "scene": {"type": "edge", "point": [0, 0], "angle": 0, "width": 1}})") ==
         "scene.width: is not a known field (expected: type, point, angle)");
+
+    // The study.
+    CHECK(error_of(R"({"study": {}, "pixel": [0, 0]})") ==
+          "pixel: cannot be given beside \"study\": a study draws its own edges and patterns "
+          "(its filter and seed go inside it)");
+    CHECK(error_of(R"({"pattern": "random", "study": {}})") ==
+          "pattern: cannot be given beside \"study\": a study draws its own edges and patterns "
+          "(its filter and seed go inside it)");
+    CHECK(error_of(R"({"study": {"patterns": []}})") ==
+          "study.patterns: must list at least one pattern (got none)");
+    CHECK(error_of(R"({"study": {"patterns": ["random", "halton"]}})") ==
+          "study.patterns[1]: must be \"regular\", \"random\", \"jittered\" or \"poisson\", "
+          "got a string (\"halton\")");
+    CHECK(error_of(R"({"study": {"patterns": ["random", "random"]}})") ==
+          "study.patterns[1]: repeats \"random\"");
+    CHECK(error_of(R"({"study": {"samples": []}})") ==
+          "study.samples: must list between 2 and 8 sample counts (got 0)");
+    CHECK(error_of(R"({"study": {"samples": [1, 4, 8]}})") ==
+          "study.samples[2]: must be a square number n × n (1, 4, 9, 16, …) for the regular "
+          "pattern (got 8)");
+    CHECK(error_of(R"({"study": {"patterns": ["jittered"], "samples": [4, 10]}})") ==
+          "study.samples[1]: must be a square number n × n (1, 4, 9, 16, …) for the jittered "
+          "pattern (got 10)");
+    CHECK(error_of(R"({"study": {"patterns": ["random"], "samples": [4, 10]}})") == "(accepted)");
+    CHECK(error_of(R"({"study": {"samples": [16, 4]}})") ==
+          "study.samples[1]: must be larger than the count before it (got 4 after 16)");
+    CHECK(error_of(R"({"study": {"samples": [1, 4]}})") ==
+          "study.samples: must hold at least two counts of 4 or more, to fit a slope (got 1)");
+    CHECK(error_of(R"({"study": {"samples": [4, 1024]}})") ==
+          "study.samples[1]: must be between 1 and 256 (got 1024)");
+    CHECK(error_of(R"({"study": {"samples": [4, 16.5]}})") ==
+          "study.samples[1]: must be an integer, got 16.5");
+    CHECK(error_of(R"({"study": {"edges": 5000}})") ==
+          "study.edges: must be between 1 and 1000 (got 5000)");
+    CHECK(error_of(R"({"study": {"edges": 1000}})") ==
+          "study.edges: times the sample counts' sum (341) must be at most 204800, so that a run "
+          "stays short (got 1000 × 341 = 341000)");
+    CHECK(error_of(R"({"study": {"edges": 600}})") == "(accepted)");
+    CHECK(error_of(R"({"study": {"edges": 0}})") ==
+          "study.edges: must be between 1 and 1000 (got 0)");
+    CHECK(error_of(R"({"study": {"angles": "diagonal"}})") ==
+          "study.angles: must be \"any\" or \"near-axis\", got a string (\"diagonal\")");
+    CHECK(error_of(R"({"study": {"pixel": [0, 0]}})") ==
+          "study.pixel: is not a known field (expected: patterns, samples, edges, angles, filter, "
+          "seed)");
+    // The C++ input is checked as strictly as the JSON.
+    Supersampling::Input in = study_input({Pattern::Random}, false, 1, 1001, {4, 16});
+    CHECK_THROWS_WITH(Supersampling::validate(in),
+                      "study.edges: must be between 1 and 1000 (got 1001)");
 }
 
 TEST_CASE("supersampling: determinism, resumability and the picture", "[sampling][supersampling]") {
@@ -495,4 +655,64 @@ TEST_CASE("supersampling: determinism, resumability and the picture", "[sampling
     CHECK(covered);
     REQUIRE(scene.handles.size() == 1);
     CHECK(scene.handles[0].x_field == "/scene/point/0");
+}
+
+TEST_CASE("supersampling: a study replays, and its picture is the log-log plot",
+          "[sampling][supersampling][convergence]") {
+    const cg::Algorithm& a = cg::test::algorithm("supersampling");
+    const cg::json small = cg::parse_json(
+        R"({"study": {"patterns": ["regular", "jittered"], "samples": [1, 4, 16], "edges": 30,
+            "angles": "near-axis", "filter": "tent", "seed": 4}})");
+    cg::test::check_replay(a, small, cg::test::kEveryStep);
+
+    const cg::json in = cg::parse_json(R"({"study": {"edges": 20}})");
+    auto run = a.create(in);
+    auto count = [](const cg::Scene& sc, cg::Role role) {
+        int n = 0;
+        for (const auto& p : sc.points) n += p.style.role == role;
+        return n;
+    };
+    auto has_label = [](const cg::Scene& sc, const std::string& text) {
+        for (const auto& l : sc.labels)
+            if (l.text == text) return true;
+        return false;
+    };
+    {  // before any step: the axes, ticks and guides, no data
+        cg::Scene sc;
+        run->draw(sc);
+        CHECK(sc.points.empty());
+        CHECK(has_label(sc, "slope −½"));
+        CHECK(has_label(sc, "slope −¾"));
+        for (const char* t : {"1", "4", "16", "64", "256", "0.001", "0.01", "0.1"})
+            CHECK(has_label(sc, t));
+    }
+    // The points appear as the steps reach them: regular (red) first, then random (magenta).
+    for (int k = 1; k <= 7; ++k) {
+        cg::StepInfo info;
+        run->step(&info);
+        CHECK(info.event == "point");
+        cg::Scene sc;
+        run->draw(sc);
+        CHECK(count(sc, cg::Role::Discarded) == std::min(k, 5));
+        CHECK(count(sc, cg::Role::Leaving) == std::max(0, k - 5));
+    }
+    while (!run->done()) run->step(nullptr);
+    cg::Scene sc;
+    run->draw(sc);
+    CHECK(sc.points.size() == 20);
+    int lines = 0;
+    for (const auto& p : sc.polygons) lines += !p.closed && p.points.size() == 5;
+    CHECK(lines == 4);
+    for (const char* name : {"regular", "random", "jittered", "poisson"})
+        CHECK(has_label(sc, name));
+    // Every point sits at (log N, log error) in the plot's frame, in order along x.
+    const auto r = a.result(*run);
+    REQUIRE(r["study"].size() == 20);
+    CHECK(r["slopes"].size() == 4);
+    for (std::size_t k = 0; k + 1 < 20; ++k)
+        if (k % 5 != 4) CHECK(sc.points[k].p.x < sc.points[k + 1].p.x);
+    for (const auto& p : sc.points) {
+        CHECK(std::isfinite(p.p.x));
+        CHECK(std::isfinite(p.p.y));
+    }
 }
