@@ -656,6 +656,37 @@ TEST_CASE(
                                  << brute_tests);
 }
 
+TEST_CASE("accel overlaps: a primitive against a closed box, against long-double references",
+          "[accel][uniform-grid]") {
+    int met = 0, apart = 0, hair = 0;
+    for (int trial = 0; trial < 100'000; ++trial) {
+        cg::Rng rng(300'000 + trial);
+        const UniformGrid::Input one = random_scene(rng);
+        const Primitive& p = one.primitives[static_cast<std::size_t>(
+            rng.integer(0, static_cast<long long>(one.primitives.size()) - 1))];
+        const Bounds pb = cg::bounds(p);
+        Bounds b;  // a box near the primitive, sometimes starting on its bounds' far face
+        const dvec3 ext = glm::max(pb.extent(), dvec3(1e-3));
+        for (int a = 0; a < 3; ++a) {
+            b.min[a] = rng.chance(0.1) ? pb.max[a] : pb.min[a] + rng.uniform(-0.5, 1.2) * ext[a];
+            b.max[a] = b.min[a] + rng.uniform(0, 0.8) * ext[a];
+        }
+        const LD h = 1e-9L * LD(glm::length(ext));
+        const bool near_ref = overlaps_ld(p, b, h), far_ref = overlaps_ld(p, b, -h);
+        const bool got = cg::overlaps(p, b);
+        CAPTURE(trial, cg::describe(p), cg::num(b.min, 17), cg::num(b.max, 17));
+        if (far_ref) REQUIRE(got);
+        if (!near_ref) REQUIRE_FALSE(got);
+        met += far_ref;
+        apart += !near_ref;
+        hair += near_ref != far_ref;
+    }
+    CHECK(met > 20'000);
+    CHECK(apart > 20'000);
+    WARN("overlaps(): " << met << " meeting, " << apart << " apart, " << hair
+                        << " within a hair (either answer)");
+}
+
 TEST_CASE("uniform-grid: run to the end equals the plain function", "[accel][uniform-grid]") {
     for (int trial = 0; trial < 300; ++trial) {
         cg::Rng rng(9000 + trial);
