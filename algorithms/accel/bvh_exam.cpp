@@ -89,13 +89,13 @@ std::string Bvh::question(const Input& in) {
            "; at an inner node push the far child, then the near one (the left child is near "
            "when d's component along the node's split axis is ≥ 0). Give the leaves left to "
            "right (leaves: a list of lists of primitive indices, each ascending), the nodes "
-           "popped in order (visited), and the primitive hit first (hit_primitive, null for "
+           "popped in order (visited), and the primitive hit first (hit/primitive, null for "
            "none; on a tie in t the smaller index).";
 }
 
 std::vector<std::string> Bvh::answer_fields(const Input& in) {
     if (!in.has_ray) return {"leaves"};
-    return {"leaves", "visited", "hit_primitive"};
+    return {"leaves", "visited", "hit/primitive"};
 }
 
 }  // namespace cg

@@ -17,8 +17,7 @@
 //                  (null without a ray),
 //           "counts": {"box_tests", "primitive_tests"} (null without a ray),
 //           "brute_force": {"primitive_tests": n},
-//           "visited": [the nodes popped, in order] (null without a ray),
-//           "hit_primitive": hit.primitive again, at the top level for exam answers}
+//           "visited": [the nodes popped, in order] (null without a ray)}
 #include <algorithm>
 
 #include "accel/bvh.hpp"
@@ -128,8 +127,6 @@ struct JsonIo<Bvh> {
         }
         out["brute_force"] = {{"primitive_tests", r.brute_force_tests}};
         out["visited"] = r.traced ? json(r.visited) : json(nullptr);
-        out["hit_primitive"] =
-            r.traced && r.hit.primitive >= 0 ? json(r.hit.primitive) : json(nullptr);
         return out;
     }
 

@@ -717,13 +717,13 @@ TEST_CASE("bvh: exam problems are hand-workable and graded", "[accel][bvh][exam]
     CHECK(misses > 100);
     CHECK(pruned > 300);
     const cg::ExamProblem p = cg::make_exam(a, 3);
-    CHECK(p.answers == std::vector<std::string>{"leaves", "visited", "hit_primitive"});
+    CHECK(p.answers == std::vector<std::string>{"leaves", "visited", "hit/primitive"});
     CHECK_THAT(p.question, Catch::Contains("median split"));
     // The worked examples of the other presets ask what their input does.
     const cg::ExamProblem sah = cg::exam_for_input(a, a.example());
     CHECK_THAT(sah.question, Catch::Contains("surface area heuristic") &&
                                  Catch::Contains("C(k) = 1 + (S_L/S)·N_L + (S_R/S)·N_R"));
-    CHECK(sah.expected["hit_primitive"] == 0);
+    CHECK(sah.expected["hit/primitive"] == 0);
     cg::json no_ray = a.example();
     no_ray.erase("ray");
     const cg::ExamProblem build = cg::exam_for_input(a, no_ray);
