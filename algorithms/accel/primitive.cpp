@@ -112,6 +112,61 @@ PrimitiveHit intersect(const Primitive& p, dvec3 origin, dvec3 direction) {
     return {};
 }
 
+namespace {
+
+bool overlaps_bounds(const Bounds& a, const Bounds& b) {
+    for (int i = 0; i < 3; ++i)
+        if (a.max[i] < b.min[i] || b.max[i] < a.min[i]) return false;
+    return true;
+}
+
+bool sphere_meets_box(const Primitive& p, const Bounds& b) {
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double c = p.a[i];
+        const double gap = c < b.min[i] ? b.min[i] - c : c > b.max[i] ? c - b.max[i] : 0.0;
+        d2 += gap * gap;
+    }
+    return d2 <= p.radius * p.radius;
+}
+
+// Separating axes, with the box centred at the origin (half sizes h) and the corners v0..v2
+// moved with it: on an axis L the triangle projects to [min, max] of L·v and the box to
+// [−r, r] with r = Σ h_i |L_i|; disjoint projections separate them.
+bool triangle_meets_box(const Primitive& p, const Bounds& b) {
+    if (!overlaps_bounds(bounds(p), b)) return false;  // the box's own three axes
+    const dvec3 c = b.centre(), h = 0.5 * b.extent();
+    const dvec3 v[3] = {p.a - c, p.b - c, p.c - c};
+    auto separated = [&](dvec3 L) {
+        const double p0 = glm::dot(L, v[0]), p1 = glm::dot(L, v[1]), p2 = glm::dot(L, v[2]);
+        const double r = h.x * std::fabs(L.x) + h.y * std::fabs(L.y) + h.z * std::fabs(L.z);
+        return std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r;
+    };
+    const dvec3 e[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+    if (separated(glm::cross(e[0], e[1]))) return false;  // the triangle's plane
+    for (const dvec3& edge : e)
+        for (int i = 0; i < 3; ++i) {
+            dvec3 axis(0.0);
+            axis[i] = 1;
+            if (separated(glm::cross(edge, axis))) return false;
+        }
+    return true;
+}
+
+}  // namespace
+
+bool overlaps(const Primitive& p, const Bounds& b) {
+    switch (p.kind) {
+        case PrimitiveKind::Sphere:
+            return sphere_meets_box(p, b);
+        case PrimitiveKind::Triangle:
+            return triangle_meets_box(p, b);
+        case PrimitiveKind::Box:
+            return overlaps_bounds(bounds(p), b);
+    }
+    return true;
+}
+
 const char* kind_name(PrimitiveKind k) {
     switch (k) {
         case PrimitiveKind::Sphere:

@@ -61,6 +61,13 @@ struct PrimitiveHit {
 // The nearest hit with t ≥ 0 of the ray E + t d (d ≠ 0) on p.
 PrimitiveHit intersect(const Primitive& p, glm::dvec3 origin, glm::dvec3 direction);
 
+// Whether p meets the closed box b (touching counts), exactly up to rounding: a sphere by the
+// squared distance from its centre to the box (Arvo: Σ over axes of the gap outside [min, max],
+// squared, ≤ r²); a box by its bounds (every axis's intervals overlap); a triangle by the
+// separating-axis test (Akenine-Möller: the box's 3 axes, the triangle's normal and the 9
+// cross products of its edges with the axes — no separating axis means they meet).
+bool overlaps(const Primitive& p, const Bounds& b);
+
 // "sphere C (0, 0, 0) r 1", "triangle (0, 0, 0) (1, 0, 0) (0, 1, 0)", "box (0, 0, 0)–(1, 1, 1)":
 // for narrations.
 std::string describe(const Primitive& p);
