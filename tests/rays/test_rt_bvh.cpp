@@ -180,7 +180,7 @@ TEST_CASE("tracer bvh: nearest hits and blockers equal brute force on 10,000 ray
     CHECK(via_tree > 40000);
 }
 
-TEST_CASE("tracer bvh: the tree's invariants; bounds hold every surface point", "[rays][bvh]") {
+TEST_CASE("tracer bvh: the tree's invariants, and bounds that hold every surface point", "[rays][bvh]") {
     Gen g{std::mt19937_64(7)};
     for (int scene = 0; scene < 8; ++scene) {
         const rt::Scene s = random_scene(g, 300, 1);
