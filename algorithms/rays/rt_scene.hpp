@@ -179,7 +179,9 @@ inline bool distributed(const Scene& s) { return distribution(s).any(); }
 // The cost of a scene in ray-object tests, worst case: every ray of a primary ray's tree (a
 // full binary tree of depth max_depth when some materials mirror and others refract — or one
 // does both —, a chain when only one kind does) meets every object and casts a shadow ray to
-// every light. The tracer has no acceleration structure, so these bound its running time. A CSG
+// every light. They bound the running time of brute force; the bounding volume hierarchy
+// (rt_bvh.hpp) usually tests far fewer objects, but not in the worst case (every object
+// overlapping every ray), so the limits still count every object. A CSG
 // object costs one test per leaf (object_tests).
 double tree_rays(const Scene& s);      // rays in one primary ray's tree, at most (glossy
                                        // materials branch gloss_samples ways)
