@@ -573,6 +573,25 @@ std::string ray_label(const std::vector<RayTracer::RayNode>& tree, int k) {
     return letter + std::to_string(k);
 }
 
+// How the nearest hit was found: the hierarchy's box and object tests for this ray (counted
+// again here, for the narration only) against brute force's one test per object.
+void narrate_search(const RayTracer::State& s, const RayTracer::RayNode& n, StepInfo& info) {
+    const rt::Prepared& p = *s.prepared;
+    const rt::TraversalCounts c =
+        rt::traversal_counts(p, n.origin, n.direction, kRayEpsilon, Quadric::kInf, n.time);
+    const std::size_t all = p.objects.size();
+    if (all < 2) return;
+    auto count = [](long long k, const char* what) {
+        return std::to_string(k) + " " + what + (k == 1 ? "" : "s");
+    };
+    info.narration += " Found with " + count(c.box_tests, "box test") + " and " +
+                      count(c.object_tests, "object test") +
+                      " in the scene's bounding volume hierarchy (brute force: " +
+                      count(static_cast<long long>(all), "object test") + ").";
+    info.vars.push_back({"box tests", c.box_tests});
+    info.vars.push_back({"object tests", c.object_tests});
+}
+
 // A hit on a CSG object: the segment lists of its tree for this ray, leaf by leaf and node by
 // node, and which end is the hit (the lists are recomputed here, for the narration only).
 void narrate_csg_hit(const rt::Object& o, const PreparedCsg& p, const RayTracer::RayNode& ray,
@@ -739,6 +758,7 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
         case Event::Miss:
             info.narration = "Ray " + name + " hits nothing: it returns the background " +
                              num(sc.background, 4) + ".";
+            narrate_search(s, n, info);
             break;
         case Event::Hit: {
             const rt::Material& m = sc.materials[s.prepared->objects[n.hit.object].material];
@@ -757,6 +777,7 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
             add("t", n.hit.t);
             add("P", vec(n.hit.point));
             add("n", vec(n.hit.normal));
+            narrate_search(s, n, info);
             break;
         }
         case Event::Texture:

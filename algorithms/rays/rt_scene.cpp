@@ -461,7 +461,8 @@ inline double box_entry(const Bounds& b, const BoxRay& r, double t0, double t1) 
 // Front-to-back traversal: visit(object) for each object of each leaf whose box the ray meets
 // at t ≤ limit(); visit returns true to stop.
 template <class Limit, class Visit>
-void traverse(const ObjectBvh& bvh, const BoxRay& r, double t_min, Limit limit, Visit visit) {
+void traverse(const ObjectBvh& bvh, const BoxRay& r, double t_min, Limit limit, Visit visit,
+              long long* box_tests = nullptr) {
     if (bvh.nodes.empty()) return;
     struct Entry {
         int node;
@@ -470,6 +471,7 @@ void traverse(const ObjectBvh& bvh, const BoxRay& r, double t_min, Limit limit, 
     Entry stack[kMaxBvhDepth + 2];
     int top = 0;
     const double t0 = box_entry(bvh.nodes[0].box, r, t_min, limit());
+    if (box_tests) ++*box_tests;
     if (t0 == kInf) return;
     stack[top++] = {0, t0};
     while (top > 0) {
@@ -482,6 +484,7 @@ void traverse(const ObjectBvh& bvh, const BoxRay& r, double t_min, Limit limit, 
             continue;
         }
         const int left = e.node + 1, right = n.right;
+        if (box_tests) *box_tests += 2;
         const double tl = box_entry(bvh.nodes[left].box, r, t_min, limit());
         const double tr = box_entry(bvh.nodes[right].box, r, t_min, limit());
         // Push the far child first so that the near one is popped next.
@@ -508,6 +511,22 @@ Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t
     traverse(p.bvh, box_ray(origin, d), t_min, [&] { return best; }, test);
     if (object < 0) return Hit{};
     return finish_hit(p, object, best, origin, d, t_min, time);
+}
+
+TraversalCounts traversal_counts(const Prepared& p, dvec3 origin, dvec3 d, double t_min,
+                                 double t_max, double time) {
+    TraversalCounts c;
+    double best = t_max;
+    int object = -1;
+    auto test = [&](int k) {
+        ++c.object_tests;
+        const double t = object_t(p.objects[k], origin, d, t_min, time);
+        if (t < best || (t == best && object >= 0 && k < object)) best = t, object = k;
+        return false;
+    };
+    for (int k : p.bvh.unbounded) test(k);
+    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return best; }, test, &c.box_tests);
+    return c;
 }
 
 Hit nearest_hit_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,

@@ -263,6 +263,15 @@ Hit nearest_hit_brute_force(const Prepared& p, glm::dvec3 origin, glm::dvec3 dir
                             double time = 0);
 int first_blocker_brute_force(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
                               double t_min, double t_max, double time = 0);
+// What nearest_hit's search costs for this ray: the boxes it tests (the root's and both
+// children's of every inner node it opens) and the objects it tests (those tested for every
+// ray included); brute force tests every object.
+struct TraversalCounts {
+    long long box_tests = 0, object_tests = 0;
+};
+TraversalCounts traversal_counts(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction,
+                                 double t_min = kRayEpsilon, double t_max = Quadric::kInf,
+                                 double time = 0);
 // Whether any object lies on the ray at t_min < t < t_max: first_blocker(…) ≥ 0, found
 // sooner (the first blocker met, not the one with the smallest index).
 bool blocked(const Prepared& p, glm::dvec3 origin, glm::dvec3 direction, double t_min,

@@ -142,7 +142,7 @@ TEST_CASE("tracer bvh: nearest hits and blockers equal brute force on 10,000 ray
     long long rays = 0, hits = 0, blocked = 0, via_tree = 0;
     for (int scene = 0; scene < 24; ++scene) {
         const double spread = scene % 3 == 0 ? 1e-3 : scene % 3 == 1 ? 1 : 1e4;
-        const int n = scene < 4 ? 3 + scene : 40 + 25 * scene;
+        const int n = scene < 4 ? 3 + scene : 30 + 10 * scene;
         const rt::Scene s = random_scene(g, n, spread);
         rt::validate(s);
         const rt::Prepared p = rt::prepare(s);
