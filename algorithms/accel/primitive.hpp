@@ -47,6 +47,25 @@ struct Primitive {
     bool operator==(const Primitive&) const = default;
 };
 
+// Making them: prim::sphere(C, r), prim::triangle(A, B, C), prim::box(min, max).
+namespace prim {
+inline Primitive sphere(glm::dvec3 centre, double radius) {
+    Primitive p;
+    p.kind = PrimitiveKind::Sphere, p.a = centre, p.radius = radius;
+    return p;
+}
+inline Primitive triangle(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+    Primitive p;
+    p.kind = PrimitiveKind::Triangle, p.a = a, p.b = b, p.c = c;
+    return p;
+}
+inline Primitive box(glm::dvec3 min, glm::dvec3 max) {
+    Primitive p;
+    p.kind = PrimitiveKind::Box, p.a = min, p.b = max;
+    return p;
+}
+}  // namespace prim
+
 Bounds bounds(const Primitive& p);
 // The point a build sorts and splits by: the centre of the primitive's bounds.
 glm::dvec3 centroid(const Primitive& p);

@@ -25,24 +25,9 @@ using glm::dvec3;
 
 namespace {
 
-Primitive sphere(dvec3 c, double r) {
-    Primitive p;
-    p.kind = PrimitiveKind::Sphere;
-    p.a = c, p.radius = r;
-    return p;
-}
-Primitive box(dvec3 mn, dvec3 mx) {
-    Primitive p;
-    p.kind = PrimitiveKind::Box;
-    p.a = mn, p.b = mx;
-    return p;
-}
-Primitive triangle(dvec3 a, dvec3 b, dvec3 c) {
-    Primitive p;
-    p.kind = PrimitiveKind::Triangle;
-    p.a = a, p.b = b, p.c = c;
-    return p;
-}
+using cg::prim::box;
+using cg::prim::sphere;
+using cg::prim::triangle;
 
 Bvh::Input scene(std::vector<Primitive> ps, Bvh::Split split, int max_leaf, dvec3 E, dvec3 d) {
     Bvh::Input in;

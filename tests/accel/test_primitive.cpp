@@ -135,21 +135,9 @@ void check_against(const RefHit& ref, const cg::PrimitiveHit& h, int& checked) {
     REQUIRE(double(err) < 1e-9);
 }
 
-Primitive sphere(dvec3 c, double r) {
-    Primitive p;
-    p.kind = PrimitiveKind::Sphere, p.a = c, p.radius = r;
-    return p;
-}
-Primitive triangle(dvec3 a, dvec3 b, dvec3 c) {
-    Primitive p;
-    p.kind = PrimitiveKind::Triangle, p.a = a, p.b = b, p.c = c;
-    return p;
-}
-Primitive box(dvec3 lo, dvec3 hi) {
-    Primitive p;
-    p.kind = PrimitiveKind::Box, p.a = lo, p.b = hi;
-    return p;
-}
+using cg::prim::box;
+using cg::prim::sphere;
+using cg::prim::triangle;
 
 }  // namespace
 

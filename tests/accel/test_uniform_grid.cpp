@@ -31,24 +31,9 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Primitive sphere(dvec3 c, double r) {
-    Primitive p;
-    p.kind = PrimitiveKind::Sphere;
-    p.a = c, p.radius = r;
-    return p;
-}
-Primitive box(dvec3 mn, dvec3 mx) {
-    Primitive p;
-    p.kind = PrimitiveKind::Box;
-    p.a = mn, p.b = mx;
-    return p;
-}
-Primitive triangle(dvec3 a, dvec3 b, dvec3 c) {
-    Primitive p;
-    p.kind = PrimitiveKind::Triangle;
-    p.a = a, p.b = b, p.c = c;
-    return p;
-}
+using cg::prim::box;
+using cg::prim::sphere;
+using cg::prim::triangle;
 
 // A 4 × 4 × 1 grid of unit cells over [0, 4]² × [z0, z1].
 UniformGrid::Input grid4(std::vector<Primitive> prims, dvec3 E, dvec3 d, double z0 = 0,
