@@ -49,8 +49,6 @@ const Series<hsr::ComplexityRow> kSeries[] = {
 
 // The acceleration structures: mean tests per ray on random scenes (accel/complexity.hpp).
 const Series<accel::ComplexityRow> kAccelSeries[] = {
-    {"brute force: primitive tests", 0xd62728ff,
-     [](const accel::ComplexityRow& r) { return double(r.n); }, false},
     {"BVH: box tests", 0x1f77b4ff,
      [](const accel::ComplexityRow& r) { return r.per_ray(r.bvh_box_tests); }, false},
     {"BVH: primitive tests", 0x17becfff,
@@ -59,10 +57,17 @@ const Series<accel::ComplexityRow> kAccelSeries[] = {
      [](const accel::ComplexityRow& r) { return r.per_ray(r.grid_cells); }, false},
     {"grid: primitive tests", 0x9467bdff,
      [](const accel::ComplexityRow& r) { return r.per_ray(r.grid_primitive_tests); }, false},
-    {"O(n): n", 0xd62728ff, [](const accel::ComplexityRow& r) { return double(r.n); }, true},
-    {"O(log n): log2 n", 0x1f77b4ff,
+    {"O(n): n, brute force's tests", 0xd62728ff,
+     [](const accel::ComplexityRow& r) { return double(r.n); }, true},
+    {"O(log n): log2 n", 0x555555ff,
      [](const accel::ComplexityRow& r) { return std::log2(double(r.n)); }, true},
 };
+
+// n as a tick label: 1e3, 1e4, … for a power of ten from 1000 on (longer numbers overlap).
+std::string n_label(int n) {
+    const int e = static_cast<int>(std::lround(std::log10(std::max(n, 1))));
+    return n >= 1000 && std::pow(10.0, e) == n ? "1e" + std::to_string(e) : std::to_string(n);
+}
 
 // A log-log plot: x = n, y = count, each series a polyline; dashed ones are the course's bounds.
 template <class Row, std::size_t N>
@@ -95,7 +100,7 @@ void plot(const std::vector<Row>& rows, const Series<Row> (&series)[N]) {
     for (const auto& r : rows) {
         const ImVec2 a = to_screen(r.n, 1);
         dl->AddLine(ImVec2(a.x, origin.y + pad), ImVec2(a.x, a.y), im_colour(kGridMinor));
-        dl->AddText(ImVec2(a.x - 4, a.y + 2), im_colour(kTickLabel), std::to_string(r.n).c_str());
+        dl->AddText(ImVec2(a.x - 4, a.y + 2), im_colour(kTickLabel), n_label(r.n).c_str());
     }
     for (const Series<Row>& s : series) {
         for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
@@ -138,17 +143,16 @@ void draw_accel_costs(Session& s) {
         "to 10^6 with `cgsandbox complexity accel`.");
     plot(s.accel_costs, kAccelSeries);
     legend(kAccelSeries);
-    if (ImGui::BeginTable("accel costs", 6,
+    if (ImGui::BeginTable("accel costs", 5,
                           ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame)) {
-        for (const char* h : {"n", "BVH box", "BVH prim.", "grid cells", "grid prim.", "build ms"})
+        for (const char* h : {"n", "BVH box", "BVH prim.", "grid cells", "grid prim."})
             ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
         for (const auto& r : s.accel_costs) {
             ImGui::TableNextRow();
-            ImGui::TableNextColumn(), ImGui::Text("%d", r.n);
-            for (int k = 1; k <= 4; ++k)
+            ImGui::TableNextColumn(), ImGui::TextUnformatted(n_label(r.n).c_str());
+            for (int k = 0; k < 4; ++k)
                 ImGui::TableNextColumn(), ImGui::Text("%.1f", kAccelSeries[k].value(r));
-            ImGui::TableNextColumn(), ImGui::Text("%.0f / %.0f", r.bvh_build_ms, r.grid_build_ms);
         }
         ImGui::EndTable();
     }
