@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "checkpoint.hpp"
+#include "accel/complexity.hpp"
 #include "hsr/complexity.hpp"
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
@@ -420,11 +421,23 @@ int cli_main(int argc, char** argv) {
     std::vector<long long> sides{8, 16, 32, 64};
     std::vector<int> counts{1, 4, 16};
     int trials = 5;
+    std::vector<int> primitive_counts{10, 100, 1000, 10000, 100000, 1000000};
+    int rays = 1000;
     auto* complexity = app.add_subcommand("complexity", "Count the basic operations on growing random scenes");
-    complexity->add_option("TOPIC", topic, "hsr (hidden-surface removal)")->required()->check(CLI::IsMember({"hsr"}));
+    complexity
+        ->add_option("TOPIC", topic,
+                     "hsr (hidden-surface removal) or accel (brute force, BVH, grid)")
+        ->required()
+        ->check(CLI::IsMember({"hsr", "accel"}));
     complexity->add_option("--sizes", sides, "Screen sides in pixels (default 8 16 32 64)")->check(CLI::Range(1, 1024));
     complexity->add_option("--polygons", counts, "Polygon counts (default 1 4 16)")->check(CLI::Range(0, 1000));
     complexity->add_option("--trials", trials, "Random scenes per row (default 5)")->check(CLI::Range(1, 1000));
+    complexity
+        ->add_option("--counts", primitive_counts,
+                     "accel: primitive counts (default 10 100 … 1000000)")
+        ->check(CLI::Range(1, 2000000));
+    complexity->add_option("--rays", rays, "accel: random rays per scene (default 1000)")
+        ->check(CLI::Range(1, 1000000));
 
     SceneRenderOptions so;
     auto* render_scene = app.add_subcommand(
@@ -457,7 +470,11 @@ int cli_main(int argc, char** argv) {
         if (*lessons) return cmd_lessons(registry, check_lessons);
         if (*render_scene) return cmd_render_scene(so);
         if (*complexity) {
-            std::cout << hsr::complexity_table(hsr::complexity(sides, counts, trials, 1));
+            if (topic == "accel")  // brute force run and compared on every ray up to n = 10⁴
+                std::cout << accel::complexity_table(
+                    accel::complexity(primitive_counts, rays, 1, 10000));
+            else
+                std::cout << hsr::complexity_table(hsr::complexity(sides, counts, trials, 1));
             return 0;
         }
         return viewer::run_viewer(registry, std::nullopt);

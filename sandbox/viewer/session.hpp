@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/complexity.hpp"
 #include "checkpoint.hpp"
 #include "core/timeline.hpp"
 #include "hsr/complexity.hpp"
@@ -96,6 +97,7 @@ struct Session {
     bool browsing = false;  // the Lessons tab lists the lessons although one is open
     ExamState exam;
     std::vector<hsr::ComplexityRow> hsr_costs;  // the costs plot's table, made when first opened
+    std::vector<accel::ComplexityRow> accel_costs;  // the same for the acceleration structures
     Tab tab = Tab::Algorithm;    // the tab shown (what the tab bar shows, or is about to)
     bool tab_requested = false;  // `tab` is to be selected in the tab bar when next drawn
 

@@ -130,6 +130,17 @@ TEST_CASE("cli: --help works on every command", "[cli]") {
     CHECK(cgsandbox({"--help"}).exit_code == 0);
 }
 
+TEST_CASE("cli: complexity accel prints tests per ray for each n, checked against brute force",
+          "[cli]") {
+    auto r = cgsandbox({"complexity", "accel", "--counts", "10", "100", "--rays", "20"});
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("brute force: n tests") && Catch::Contains("bvh box") &&
+                          Catch::Contains("grid prim") && Catch::Contains("20/20"));
+    auto bad = cgsandbox({"complexity", "accel", "--counts", "0"});
+    CHECK(bad.exit_code == 2);
+    CHECK_THAT(bad.err, Catch::Contains("--counts"));
+}
+
 TEST_CASE("cli: the viewer without a display says so in one line", "[cli][gui]") {
     auto r = cg::test::run_process({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", CG_BINARY});
     CHECK(r.exit_code != 0);
