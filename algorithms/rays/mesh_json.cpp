@@ -8,7 +8,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "core/format.hpp"
 #include "sampling/pattern_json.hpp"
@@ -116,7 +115,29 @@ struct MeshObjError {
     std::string reason;
 };
 
+// A decimal number as OBJ writes them (and tinyobjloader reads them): [+-] digits [. digits]
+// [e [+-] digits], or starting with the point. No hexadecimal, "inf" or "nan".
+bool mesh_obj_decimal(const std::string& t) {
+    std::size_t i = 0, digits = 0;
+    auto is_digit = [&](std::size_t k) { return k < t.size() && t[k] >= '0' && t[k] <= '9'; };
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    while (is_digit(i)) ++i, ++digits;
+    if (i < t.size() && t[i] == '.') {
+        ++i;
+        while (is_digit(i)) ++i, ++digits;
+    }
+    if (digits == 0) return false;
+    if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+        ++i;
+        if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+        if (!is_digit(i)) return false;
+        while (is_digit(i)) ++i;
+    }
+    return i == t.size();
+}
+
 double mesh_obj_number(const std::string& tok, std::size_t line) {
+    if (!mesh_obj_decimal(tok)) throw MeshObjError{line, "\"" + tok + "\" is not a number"};
     const char* s = tok.c_str();
     char* end = nullptr;
     errno = 0;
@@ -161,17 +182,25 @@ void mesh_obj_scan(const std::string& text) {
     std::size_t v = 0, vt = 0, vn = 0, faces = 0, line = 0, pos = 0;
     std::vector<std::string> tok;
     while (pos < text.size()) {
-        std::size_t eol = text.find('\n', pos);
+        // Lines end as tinyobjloader ends them: at "\n", "\r\n" or a lone "\r".
+        std::size_t eol = text.find_first_of("\r\n", pos);
         if (eol == std::string::npos) eol = text.size();
         std::string s = text.substr(pos, eol - pos);
-        pos = eol + 1;
+        pos = eol + (eol + 1 < text.size() && text[eol] == '\r' && text[eol + 1] == '\n' ? 2 : 1);
         ++line;
         if (s.find('\0') != std::string::npos)
             throw MeshObjError{line, "is not text (a NUL byte): not an OBJ file"};
         if (const auto hash = s.find('#'); hash != std::string::npos) s.resize(hash);
+        // Fields are separated by spaces and tabs only (other control characters are refused
+        // as part of a field).
         tok.clear();
-        std::istringstream in(s);
-        for (std::string t; in >> t;) tok.push_back(t);
+        for (std::size_t k = 0; k < s.size();) {
+            const std::size_t b = s.find_first_not_of(" \t", k);
+            if (b == std::string::npos) break;
+            const std::size_t e = std::min(s.find_first_of(" \t", b), s.size());
+            tok.push_back(s.substr(b, e - b));
+            k = e;
+        }
         if (tok.empty()) continue;
         const std::string& kw = tok[0];
         const std::size_t args = tok.size() - 1;

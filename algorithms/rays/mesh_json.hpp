@@ -13,13 +13,15 @@
 // OBJ files: a relative path is taken relative to the folder of the scene or input file that
 // names it (the CLI rebases it as it does texture images: rebase_image_paths). The file is
 // checked line by line before tinyobjloader reads it, so that a broken file is refused with
-// its line: a number that does not parse or is not finite (or beyond ±1e12), a face with fewer
-// than 3 vertices (or more than 255), a face index 0 or referring to a vertex, texture
-// coordinate or normal not yet defined, a zero normal, free-form geometry (curv, surf, …) or
-// any statement that is not OBJ; a missing or unreadable file; a file without faces. Lines
-// ("l") and points ("p") are ignored, as are groups, smoothing groups and materials. Polygons
-// are triangulated (tinyobjloader's fan); the file's normals and texture coordinates are used
-// when every face gives them; triangles of zero area are left out. Errors:
+// its line: a number that is not decimal (no hexadecimal, inf or nan) or is beyond ±1e12, a
+// face with fewer than 3 vertices (or more than 255), a face index 0 or referring to a vertex,
+// texture coordinate or normal not yet defined, a zero normal, free-form geometry (curv, surf,
+// …) or any statement that is not OBJ; a missing or unreadable file; a file without faces.
+// Lines end at "\n", "\r\n" or a lone "\r" and fields are separated by spaces and tabs, as
+// tinyobjloader reads them. Lines ("l") and points ("p") are ignored, as are groups, smoothing
+// groups and materials. Polygons are triangulated (tinyobjloader's fan); the file's normals and
+// texture coordinates are used when every face gives them; triangles of zero area are left out.
+// Errors:
 //   objects[2].obj: "cube.obj" line 12: face index 9 refers to vertex 9, but only 8 are defined
 #pragma once
 

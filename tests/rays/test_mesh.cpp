@@ -459,7 +459,11 @@ TEST_CASE("OBJ: broken files are refused with the field, the file and the line",
     CHECK(obj_error(head + "v 1 x 0\nf 1 2 3\n") ==
           "objects[2].obj: \"FILE\" line 4: \"x\" is not a number");
     CHECK(obj_error(head + "v 1 nan 0\nf 1 2 3\n") ==
-          "objects[2].obj: \"FILE\" line 4: \"nan\" is not a finite number of magnitude at most "
+          "objects[2].obj: \"FILE\" line 4: \"nan\" is not a number");
+    CHECK(obj_error(head + "v 1 -inf 0\nf 1 2 3\n") ==
+          "objects[2].obj: \"FILE\" line 4: \"-inf\" is not a number");
+    CHECK(obj_error(head + "v 1 2e12 0\nf 1 2 3\n") ==
+          "objects[2].obj: \"FILE\" line 4: \"2e12\" is not a finite number of magnitude at most "
           "1e12");
     CHECK(obj_error(head + "v 1 1e400 0\nf 1 2 3\n") ==
           "objects[2].obj: \"FILE\" line 4: \"1e400\" is not a finite number of magnitude at most "
@@ -502,6 +506,18 @@ TEST_CASE("OBJ: broken files are refused with the field, the file and the line",
     CHECK(obj_error("") == "objects[2].obj: \"FILE\": has no faces: an empty mesh");
     CHECK(obj_error("v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n") ==
           "objects[2].obj: \"FILE\": has no triangles of nonzero area: an empty mesh");
+    // Only decimal numbers (tinyobjloader would read "0x1" as 0); lines end at "\n", "\r\n" or a
+    // lone "\r", as tinyobjloader ends them; fields are separated by spaces and tabs only.
+    CHECK(obj_error(head + "v 0x1 0 0\nf 1 2 3\n") ==
+          "objects[2].obj: \"FILE\" line 4: \"0x1\" is not a number");
+    CHECK(obj_error(head + "vn 0 \r0 1\nf 1//1 2//1 3//1\n") ==
+          "objects[2].obj: \"FILE\" line 4: a normal \"vn\" needs 3 numbers, got 1");
+    CHECK(obj_error(head + "v 1\f2 3\nf 1 2 3\n") ==
+          "objects[2].obj: \"FILE\" line 4: a vertex \"v\" needs x y z (then w, or r g b), got 2 "
+          "numbers");
+    CHECK(obj_error("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 4\r\n") ==
+          "objects[2].obj: \"FILE\" line 4: face index 4 refers to vertex 4, but only 3 are defined "
+          "before this line");
     // Windows line ends and the lenient parts of OBJ.
     CHECK(obj_error(
               "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\ng a\r\ns 1\r\nusemtl x\r\nl 1 2\r\nf 1 2 3\r\n") ==
