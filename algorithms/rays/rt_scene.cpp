@@ -403,9 +403,18 @@ dvec3 object_normal(const PreparedObject& o, dvec3 point, dvec3 origin, dvec3 d,
         const double nn = glm::dot(N, N);
         const double beta = glm::dot(glm::cross(q, o.e2), N) / nn;
         const double gamma = glm::dot(glm::cross(o.e1, q), N) / nn;
-        const dvec3 n = (1 - beta - gamma) * o.n0 + beta * o.n1 + gamma * o.n2;
+        dvec3 n = (1 - beta - gamma) * o.n0 + beta * o.n1 + gamma * o.n2;
         const double len = glm::length(n);
-        return len > 0 && std::isfinite(len) ? n / len : o.normal;  // opposed normals: flat
+        if (!(len > 0) || !std::isfinite(len)) return o.normal;  // opposed normals: flat
+        n /= len;
+        // Near the outline the interpolated normal can face away from a ray that meets the
+        // triangle's front (or the other way round): it is then bent, along the ray, just far
+        // enough to lie on the geometric normal's side, so that which side the ray came from
+        // (entering or leaving) is the geometric one.
+        const dvec3 dn = unit(d);
+        const double a = glm::dot(n, dn), b = glm::dot(o.normal, dn);
+        if (b != 0 && (a < 0) != (b < 0)) n = unit(n + (std::copysign(1e-3, b) - a) * dn);
+        return n;
     }
     return o.normal;
 }

@@ -24,7 +24,8 @@
 // plane's as given, a triangle's (p1 − p0) × (p2 − p0) (its vertices counter-clockwise seen
 // from the front) or, when it has vertex normals n0, n1, n2 (a smooth mesh), the unit
 // (1 − β − γ) n0 + β n1 + γ n2 at the hit's barycentric coordinates β, γ (the flat one where
-// they cancel); for shading the normal is turned to face the incoming ray, and a ray that
+// they cancel; bent along the ray onto the flat normal's side of the ray where, near the
+// outline, it faces the other way); for shading the normal is turned to face the incoming ray, and a ray that
 // met that normal head-on (d·n ≤ 0) is entering the solid. Refraction (Snell's law,
 // η₁ sin θ₁ = η₂ sin θ₂) bends a ray entering a material of index `ior` from the outside
 // (index 1) by η = 1/ior, and a leaving one by η = ior; when η sin θ₁ > 1 there is no
