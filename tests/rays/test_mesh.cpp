@@ -529,9 +529,10 @@ TEST_CASE("OBJ: broken files are refused with the field, the file and the line",
     CHECK(obj_error(head + "v 1\f2 3\nf 1 2 3\n") ==
           "objects[2].obj: \"FILE\" line 4: a vertex \"v\" needs x y z (then w, or r g b), got 2 "
           "numbers");
-    CHECK(obj_error("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 4\r\n") ==
-          "objects[2].obj: \"FILE\" line 4: face index 4 refers to vertex 4, but only 3 are defined "
-          "before this line");
+    CHECK(
+        obj_error("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 4\r\n") ==
+        "objects[2].obj: \"FILE\" line 4: face index 4 refers to vertex 4, but only 3 are defined "
+        "before this line");
     // Windows line ends and the lenient parts of OBJ.
     CHECK(obj_error(
               "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\ng a\r\ns 1\r\nusemtl x\r\nl 1 2\r\nf 1 2 3\r\n") ==
