@@ -3,6 +3,7 @@
 // the generated meshes (sphere, terrain, Bézier patch: counts, geometry, normals, determinism),
 // OBJ files (a cube read back; every kind of broken file refused with its field, file and line),
 // a mesh sphere's image against the analytic sphere's, and the scene file's new fields.
+#include <stb/stb_image.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -19,6 +20,7 @@
 #include "rays/rt_scene_json.hpp"
 #include "rays/texture_json.hpp"
 #include "rays/tracer_support.hpp"
+#include "support/process.hpp"
 
 using glm::dvec2;
 using glm::dvec3;
@@ -600,4 +602,28 @@ TEST_CASE("a smooth mesh sphere's image is close to the analytic sphere's", "[me
         REQUIRE(h.object >= 0);
         CHECK(glm::dot(h.normal, glm::normalize(h.point)) > std::cos(M_PI / 180));
     }
+}
+
+TEST_CASE("meshes: render-scene matches the golden image (generated sphere, patch, terrain; OBJ)",
+          "[mesh][golden]") {
+    // The OBJ path "../../data/cube.obj" is relative to the scene file: the CLI rebases it.
+    const std::string dir = std::string(CG_SOURCE_DIR) + "/tests/golden/ray-tracer/";
+    const std::string out = cg::test::output_path("golden-meshes.png");
+    auto r = cg::test::cgsandbox({"render-scene", dir + "meshes.json", "--out", out});
+    CAPTURE(r.out, r.err);
+    REQUIRE(r.exit_code == 0);
+    int w = 0, h = 0, n = 0, w2 = 0, h2 = 0;
+    unsigned char* got = stbi_load(out.c_str(), &w, &h, &n, 4);
+    unsigned char* want = stbi_load((dir + "meshes.png").c_str(), &w2, &h2, &n, 4);
+    REQUIRE(got != nullptr);
+    REQUIRE(want != nullptr);
+    REQUIRE(w == w2);
+    REQUIRE(h == h2);
+    // Within 2 levels per channel everywhere but a few edge pixels (as the other golden images).
+    int off = 0;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(w) * h * 4; ++k)
+        if (std::abs(int(got[k]) - int(want[k])) > 2) ++off;
+    stbi_image_free(got);
+    stbi_image_free(want);
+    CHECK(off <= w * h / 500);
 }
