@@ -5,6 +5,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/format.hpp"
 #include "rays/csg_json.hpp"
 #include "rays/mesh_json.hpp"
 #include "rays/rays_json.hpp"
