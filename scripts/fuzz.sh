@@ -15,10 +15,11 @@ export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
 "$build/bin/fuzz_seeds" "$fuzz/seeds" lessons || exit 1
 mkdir -p "$fuzz/artifacts" "$fuzz/logs"
 status=0
-for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene; do
+for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj; do
   seeds=$fuzz/seeds/$t
   [[ $t == fuzz_lesson ]] && seeds=lessons
   [[ $t == fuzz_scene ]] && seeds=tests/golden/ray-tracer
+  [[ $t == fuzz_obj ]] && seeds=tests/data
   mkdir -p "$fuzz/corpus/$t"
   log=$fuzz/logs/$t.log
   "$build/bin/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \

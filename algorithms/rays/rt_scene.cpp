@@ -274,6 +274,14 @@ void validate(const Scene& s) {
                     throw InputError(o.field, "is degenerate: its corners " + num(o.p0, 4) + ", " +
                                                   num(o.p1, 4) + ", " + num(o.p2, 4) +
                                                   " are collinear or coincide (zero area)");
+                if (o.smooth) {
+                    const dvec3* n[3] = {&o.n0, &o.n1, &o.n2};
+                    for (int k = 0; k < 3; ++k) {
+                        const std::string nf = o.field + ".normals[" + std::to_string(k) + "]";
+                        check_coordinates(*n[k], nf);
+                        check_nonzero(*n[k], nf, "a vertex normal");
+                    }
+                }
                 break;
             }
             case ObjectKind::Csg:
@@ -334,6 +342,8 @@ Prepared prepare(const Scene& s) {
                 q.e1 = o.p1 - o.p0;
                 q.e2 = o.p2 - o.p0;
                 q.normal = unit(glm::cross(q.e1, q.e2));
+                q.smooth = o.smooth;
+                if (o.smooth) q.n0 = unit(o.n0), q.n1 = unit(o.n1), q.n2 = unit(o.n2);
                 scale = std::max({scale, glm::length(o.p0), glm::length(o.p1), glm::length(o.p2)});
                 break;
             case ObjectKind::Csg:
@@ -391,6 +401,26 @@ double intersect_object(const PreparedObject& o, dvec3 origin, dvec3 d, double t
 dvec3 object_normal(const PreparedObject& o, dvec3 point, dvec3 origin, dvec3 d, double t_min) {
     if (o.kind == ObjectKind::Quadric) return normal_at(o.quadric, point);
     if (o.kind == ObjectKind::Csg) return csg_hit_normal(*o.csg, origin, d, t_min);
+    if (o.kind == ObjectKind::Triangle && o.smooth) {
+        // The hit's barycentric coordinates: point − p0 = β e1 + γ e2, by the areas of the
+        // sub-triangles over N = e1 × e2 (Möller-Trumbore's β, γ for a point on the triangle).
+        const dvec3 q = point - o.p0, N = glm::cross(o.e1, o.e2);
+        const double nn = glm::dot(N, N);
+        const double beta = glm::dot(glm::cross(q, o.e2), N) / nn;
+        const double gamma = glm::dot(glm::cross(o.e1, q), N) / nn;
+        dvec3 n = (1 - beta - gamma) * o.n0 + beta * o.n1 + gamma * o.n2;
+        const double len = glm::length(n);
+        if (!(len > 0) || !std::isfinite(len)) return o.normal;  // opposed normals: flat
+        n /= len;
+        // Near the outline the interpolated normal can face away from a ray that meets the
+        // triangle's front (or the other way round): it is then bent, along the ray, just far
+        // enough to lie on the geometric normal's side, so that which side the ray came from
+        // (entering or leaving) is the geometric one.
+        const dvec3 dn = unit(d);
+        const double a = glm::dot(n, dn), b = glm::dot(o.normal, dn);
+        if (b != 0 && (a < 0) != (b < 0)) n = unit(n + (std::copysign(1e-3, b) - a) * dn);
+        return n;
+    }
     return o.normal;
 }
 

@@ -22,8 +22,11 @@
 // written top row first. The primary ray's direction is d = P − E (so t = 1 on the screen);
 // secondary rays have unit directions. Normals: a quadric's along ∇F (rays/quadric.hpp), a
 // plane's as given, a triangle's (p1 − p0) × (p2 − p0) (its vertices counter-clockwise seen
-// from the front); for shading the normal is turned to face the incoming ray, and a ray that
-// met the geometric normal head-on (d·n ≤ 0) is entering the solid. Refraction (Snell's law,
+// from the front) or, when it has vertex normals n0, n1, n2 (a smooth mesh), the unit
+// (1 − β − γ) n0 + β n1 + γ n2 at the hit's barycentric coordinates β, γ (the flat one where
+// they cancel; bent along the ray onto the flat normal's side of the ray where, near the
+// outline, it faces the other way); for shading the normal is turned to face the incoming ray, and a ray that
+// met that normal head-on (d·n ≤ 0) is entering the solid. Refraction (Snell's law,
 // η₁ sin θ₁ = η₂ sin θ₂) bends a ray entering a material of index `ior` from the outside
 // (index 1) by η = 1/ior, and a leaving one by η = ior; when η sin θ₁ > 1 there is no
 // refracted ray (total internal reflection) and the transmitted share kt goes to the mirror
@@ -107,6 +110,8 @@ struct Object {
     Quadric quadric;    // Quadric
     glm::dvec3 p0{0.0}, p1{0.0}, p2{0.0};  // Triangle vertices; Plane: p0 is a point on it
     glm::dvec3 normal{0, 0, 1};            // Plane: as given (any length > 0)
+    bool smooth = false;                   // Triangle: vertex normals given (smooth shading):
+    glm::dvec3 n0{0.0}, n1{0.0}, n2{0.0};  // ... at p0, p1, p2 (any length > 0)
     CsgTree csg;                           // Csg: the tree (rays/rt_csg.hpp)
     ObjectUv uv;                           // its texture parametrisation (rays/rt_texture.hpp)
     glm::dvec3 velocity{0.0};              // motion blur: moved by velocity × time
@@ -207,6 +212,8 @@ struct PreparedObject {
     PreparedQuadric quadric;
     glm::dvec3 p0{0.0}, e1{0.0}, e2{0.0};  // a triangle's p0, p1 − p0, p2 − p0
     glm::dvec3 normal{0.0};                // a plane's or triangle's unit normal
+    bool smooth = false;                   // a triangle with vertex normals ...
+    glm::dvec3 n0{0.0}, n1{0.0}, n2{0.0};  // ... unit, at p0, p1, p2
     Shared<PreparedCsg> csg;               // a CSG object's tree
     glm::dvec3 velocity{0.0};              // motion blur (rays are moved by −velocity × time)
     bool moving = false;                   // velocity ≠ 0

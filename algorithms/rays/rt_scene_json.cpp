@@ -1,8 +1,13 @@
 #include "rays/rt_scene_json.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
+#include "core/format.hpp"
 #include "rays/csg_json.hpp"
+#include "rays/mesh_json.hpp"
 #include "rays/rays_json.hpp"
 #include "rays/texture_json.hpp"
 #include "sampling/pattern_json.hpp"
@@ -213,6 +218,126 @@ Light light_from(const Reader& l) {
     return light;
 }
 
+// A mesh's or triangle's "normals": one per vertex, each nonzero.
+std::vector<glm::dvec3> mesh_normals_from(const Reader& o, std::size_t vertices) {
+    const std::vector<glm::dvec3> n = o.points3("normals");
+    if (n.size() != vertices)
+        throw InputError(o.field("normals"), "must give one normal per vertex: " +
+                                                 std::to_string(vertices) + " vertices, " +
+                                                 std::to_string(n.size()) + " normals");
+    for (std::size_t k = 0; k < n.size(); ++k) {
+        const double big = std::max({std::fabs(n[k].x), std::fabs(n[k].y), std::fabs(n[k].z)});
+        if (!(big >= 1e-150))
+            throw InputError(element(o.field("normals"), k),
+                             "must not be the zero vector (or shorter than 1e-150): it is the "
+                             "vertex's normal");
+    }
+    return n;
+}
+
+// A mesh object: its triangles from "vertices" + "triangles" (+ "uv", "normals"), from
+// "generate" (rays/mesh_gen.hpp) or from an "obj" file, moved by an optional "transform";
+// one triangle object each.
+void mesh_objects_from(const Reader& o, const Object& obj, Scene& s) {
+    const int sources = int(o.has("vertices")) + int(o.has("generate")) + int(o.has("obj"));
+    if (sources != 1)
+        throw InputError(o.path(), "needs exactly one of \"vertices\" (with \"triangles\"), "
+                                   "\"generate\" and \"obj\"");
+    mesh::Mesh m;
+    std::string source;  // the field the triangles come from, for errors
+    auto check_count = [&](std::size_t n, const std::string& f) {
+        if (s.objects.size() + n > kMaxObjects)
+            throw InputError(f, "makes the scene " + std::to_string(s.objects.size() + n) +
+                                    " objects; the limit is " + std::to_string(kMaxObjects));
+    };
+    if (o.has("generate")) {
+        for (const char* k : {"triangles", "uv", "normals"})
+            if (o.has(k))
+                throw InputError(o.field(k), "comes with \"vertices\": a generated mesh makes "
+                                             "its own");
+        const Reader g = o.object("generate");
+        source = g.path();
+        check_count(mesh_json::generate_count(g), source);
+        m = mesh_json::generate(g);
+    } else if (o.has("obj")) {
+        for (const char* k : {"triangles", "uv", "normals"})
+            if (o.has(k))
+                throw InputError(o.field(k), "comes with \"vertices\": an OBJ file gives its own");
+        source = o.field("obj");
+        m = mesh_json::read_obj(o.string("obj"), source);
+        check_count(m.triangles.size(), source);
+    } else {
+        m.vertices = o.points3("vertices");
+        if (o.has("uv")) {
+            m.uv = o.points2("uv");
+            if (m.uv.size() != m.vertices.size())
+                throw InputError(o.field("uv"), "must give one (u, v) per vertex: " +
+                                                    std::to_string(m.vertices.size()) +
+                                                    " vertices, " + std::to_string(m.uv.size()) +
+                                                    " pairs");
+        }
+        if (o.has("normals")) m.normals = mesh_normals_from(o, m.vertices.size());
+        const json& tris = list(o, "triangles", "triangles [i, j, k]");
+        if (tris.empty()) throw InputError(o.field("triangles"), "must list at least one triangle");
+        check_count(tris.size(), o.field("triangles"));
+        m.triangles.reserve(tris.size());
+        for (std::size_t t = 0; t < tris.size(); ++t) {
+            const std::string tf = element(o.field("triangles"), t);
+            const json& ix = tris[t];
+            if (!ix.is_array() || ix.size() != 3)
+                throw InputError(tf, "must be three vertex indices [i, j, k], got " + describe(ix));
+            std::array<std::uint32_t, 3> tri{};
+            for (int k = 0; k < 3; ++k) {
+                if (!ix[k].is_number_integer() || ix[k].get<long long>() < 0 ||
+                    ix[k].get<long long>() >= static_cast<long long>(m.vertices.size()))
+                    throw InputError(element(tf, k), "must be a vertex index from 0 to " +
+                                                         std::to_string(m.vertices.size() - 1) +
+                                                         ", got " + describe(ix[k]));
+                tri[k] = ix[k].get<std::uint32_t>();
+            }
+            m.triangles.push_back(tri);
+        }
+    }
+    if (o.has("transform")) {
+        // Points by M, normals by the inverse transpose of its 3 × 3 part (an affine M only).
+        const glm::dmat4 M = rays_json::matrix4(o, "transform");
+        if (M[0][3] != 0 || M[1][3] != 0 || M[2][3] != 0 || M[3][3] != 1)
+            throw InputError(o.field("transform"),
+                             "must be affine: its last row must be [0, 0, 0, 1]");
+        const glm::dmat3 A(M);
+        const double det = glm::determinant(A);
+        if (!(std::fabs(det) > 1e-300) || !std::isfinite(det))
+            throw InputError(o.field("transform"),
+                             "must be invertible: its 3 × 3 part has determinant " + num(det));
+        const glm::dmat3 N = glm::transpose(glm::inverse(A));
+        for (glm::dvec3& p : m.vertices) p = glm::dvec3(M * glm::dvec4(p, 1.0));
+        for (glm::dvec3& n : m.normals) n = N * n;
+    }
+    const bool from_vertices = o.has("vertices");
+    const std::size_t before = s.objects.size();
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        const auto& ix = m.triangles[t];
+        Object tri = obj;
+        tri.kind = ObjectKind::Triangle;
+        tri.field = from_vertices ? element(o.field("triangles"), t) : source;
+        tri.name = obj.name + ".triangles[" + std::to_string(t) + "]";
+        tri.p0 = m.vertices[ix[0]], tri.p1 = m.vertices[ix[1]], tri.p2 = m.vertices[ix[2]];
+        // A transform may squash a generated triangle flat: it is left out, as a flat one is.
+        if (!from_vertices && mesh::degenerate(tri.p0, tri.p1, tri.p2)) continue;
+        if (!m.uv.empty()) {
+            tri.uv.has_uv = true;
+            tri.uv.uv = {m.uv[ix[0]], m.uv[ix[1]], m.uv[ix[2]]};
+        }
+        if (!m.normals.empty()) {
+            tri.smooth = true;
+            tri.n0 = m.normals[ix[0]], tri.n1 = m.normals[ix[1]], tri.n2 = m.normals[ix[2]];
+        }
+        s.objects.push_back(std::move(tri));
+    }
+    if (s.objects.size() == before)
+        throw InputError(source, "gives no triangle of nonzero area: every one is degenerate");
+}
+
 int material_index(const Reader& r, const std::vector<Material>& materials) {
     const std::string name = r.string("material");
     for (std::size_t i = 0; i < materials.size(); ++i)
@@ -245,7 +370,7 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
             obj.normal = o.point3("normal");
             s.objects.push_back(obj);
         } else if (type == "triangle") {
-            o.only({"type", "name", "material", "vertices", "uv", "velocity"});
+            o.only({"type", "name", "material", "vertices", "uv", "normals", "velocity"});
             object_uv_from(o, obj);
             obj.kind = ObjectKind::Triangle;
             const std::vector<glm::dvec3> p = o.points3("vertices");
@@ -253,50 +378,17 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
                 throw InputError(o.field("vertices"),
                                  "must be 3 points, got " + std::to_string(p.size()));
             obj.p0 = p[0], obj.p1 = p[1], obj.p2 = p[2];
+            if (o.has("normals")) {
+                const std::vector<glm::dvec3> n = mesh_normals_from(o, 3);
+                obj.smooth = true;
+                obj.n0 = n[0], obj.n1 = n[1], obj.n2 = n[2];
+            }
             obj.field = o.field("vertices");
             s.objects.push_back(obj);
         } else if (type == "mesh") {
-            o.only({"type", "name", "material", "vertices", "triangles", "uv", "velocity"});
-            const std::vector<glm::dvec3> p = o.points3("vertices");
-            std::vector<glm::dvec2> uv;  // per vertex (optional)
-            if (o.has("uv")) {
-                uv = o.points2("uv");
-                if (uv.size() != p.size())
-                    throw InputError(o.field("uv"), "must give one (u, v) per vertex: " +
-                                                        std::to_string(p.size()) + " vertices, " +
-                                                        std::to_string(uv.size()) + " pairs");
-            }
-            const json& tris = list(o, "triangles", "triangles [i, j, k]");
-            if (tris.empty())
-                throw InputError(o.field("triangles"), "must list at least one triangle");
-            if (s.objects.size() + tris.size() > kMaxObjects)
-                throw InputError(o.field("triangles"),
-                                 "makes the scene " +
-                                     std::to_string(s.objects.size() + tris.size()) +
-                                     " objects; the limit is " + std::to_string(kMaxObjects));
-            for (std::size_t t = 0; t < tris.size(); ++t) {
-                const std::string tf = element(o.field("triangles"), t);
-                const json& ix = tris[t];
-                if (!ix.is_array() || ix.size() != 3)
-                    throw InputError(tf,
-                                     "must be three vertex indices [i, j, k], got " + describe(ix));
-                Object tri = obj;
-                tri.kind = ObjectKind::Triangle;
-                tri.field = tf;
-                tri.name = obj.name + ".triangles[" + std::to_string(t) + "]";
-                glm::dvec3* corner[3] = {&tri.p0, &tri.p1, &tri.p2};
-                for (int k = 0; k < 3; ++k) {
-                    if (!ix[k].is_number_integer() || ix[k].get<long long>() < 0 ||
-                        ix[k].get<long long>() >= static_cast<long long>(p.size()))
-                        throw InputError(element(tf, k), "must be a vertex index from 0 to " +
-                                                        std::to_string(p.size() - 1) + ", got " +
-                                                        describe(ix[k]));
-                    *corner[k] = p[ix[k].get<std::size_t>()];
-                    if (!uv.empty()) tri.uv.uv[k] = uv[ix[k].get<std::size_t>()];
-                }
-                tri.uv.has_uv = !uv.empty();
-                s.objects.push_back(tri);
-            }
+            o.only({"type", "name", "material", "vertices", "triangles", "uv", "normals",
+                    "generate", "obj", "transform", "velocity"});
+            mesh_objects_from(o, obj, s);
         } else if (type == "csg") {
             o.only({"type", "name", "material", "tree", "velocity"});
             obj.kind = ObjectKind::Csg;
@@ -460,6 +552,7 @@ json scene_to_json(const Scene& s) {
                 if (o.uv.has_uv)
                     j["uv"] = {nice_point(o.uv.uv[0]), nice_point(o.uv.uv[1]),
                                nice_point(o.uv.uv[2])};
+                if (o.smooth) j["normals"] = {nice_point(o.n0), nice_point(o.n1), nice_point(o.n2)};
                 break;
             case ObjectKind::Csg:
                 j = json{{"type", "csg"}, {"tree", csg_json::tree_json(o.csg)}};

@@ -23,8 +23,12 @@
 //                   "samples": shadow rays over the area (default 1)}, …],
 //    "objects":   [{"type": a quadric type (see rays_json.hpp) with its "params", "transform",
 //                   "zmin", "zmax"} | {"type": "plane", "point": [x, y, z], "normal": [x, y, z]} |
-//                  {"type": "triangle", "vertices": [[x, y, z] × 3]} |
-//                  {"type": "mesh", "vertices": [[x, y, z], …], "triangles": [[i, j, k], …]} |
+//                  {"type": "triangle", "vertices": [[x, y, z] × 3], "normals" (3, optional)} |
+//                  {"type": "mesh", "vertices": [[x, y, z], …], "triangles": [[i, j, k], …],
+//                   "uv", "normals": one per vertex (optional)} |
+//                  {"type": "mesh", "generate": {"shape": "sphere" | "terrain" | "patch", …}} |
+//                  {"type": "mesh", "obj": "file.obj"} (rays/mesh_json.hpp; a mesh may have an
+//                   affine "transform") |
 //                  {"type": "csg", "tree": NODE (rays/csg_json.hpp: union, intersection and
 //                   difference of quadric solids and boxes), one solid of one material},
 //                  each with "material": a material's name, an optional "name" and an optional
@@ -32,8 +36,8 @@
 //    "stepping":  {…} (the ray-tracer algorithm's; ignored by render-scene)}
 //
 // A mesh becomes one triangle object per entry of "triangles" (vertex indices, counter-
-// clockwise seen from the front). Errors name the field: "objects[2].material: no material
-// \"glas\" (materials: glass, red)".
+// clockwise seen from the front), smooth when it has vertex normals. Errors name the field:
+// "objects[2].material: no material \"glas\" (materials: glass, red)".
 #pragma once
 
 #include "io/json.hpp"

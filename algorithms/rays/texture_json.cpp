@@ -427,7 +427,8 @@ void rebase_image_paths(json& j, const std::string& dir) {
     }
     if (!j.is_object()) return;
     for (auto it = j.begin(); it != j.end(); ++it) {
-        if (it.key() == "image" && it.value().is_string()) {
+        // Texture images, and the ray tracer's OBJ meshes (rays/mesh_json.hpp).
+        if ((it.key() == "image" || it.key() == "obj") && it.value().is_string()) {
             const std::string p = it.value().get<std::string>();
             if (!p.empty() && p[0] != '/') it.value() = dir + "/" + p;
         } else {

@@ -60,8 +60,9 @@ TextureImage read_image_file(const std::string& path, const std::string& field);
 }  // namespace cg::texture_json
 
 namespace cg {
-// Every string under a key "image" that is a relative path becomes `dir`/path (`dir` empty or
-// "." leaves them): what the CLI does to an input or scene read from a file in `dir`.
+// Every string under a key "image" (or "obj", a mesh's file) that is a relative path becomes
+// `dir`/path (`dir` empty or "." leaves them): what the CLI does to an input or scene read from
+// a file in `dir`.
 void rebase_image_paths(json& j, const std::string& dir);
 // The folder part of a file path ("scenes/a.json" → "scenes", "a.json" → "").
 std::string folder_of(const std::string& path);
