@@ -83,7 +83,7 @@ TEST_CASE("complexity accel: the counts grow as the course says", "[accel][compl
     CHECK_THAT(table, Catch::Contains("100000"));
 }
 
-TEST_CASE("complexity accel: brute force makes n tests; the scene is seeded",
+TEST_CASE("complexity accel: brute force makes n tests, and the scene is seeded",
           "[accel][complexity]") {
     cg::Rng a(5), b(5);
     const auto s1 = random_scene(a, 500), s2 = random_scene(b, 500);

@@ -191,7 +191,7 @@ TEST_CASE("smooth normals: the barycentric interpolation of the vertex normals",
     WARN(hits << " hits, " << bent << " normals bent onto the flat normal's side");
 }
 
-TEST_CASE("smooth normals: a triangle without normals stays flat; corners give their normal",
+TEST_CASE("smooth normals: a triangle without normals stays flat, and corners give their normal",
           "[mesh]") {
     const auto s = cg::test::scene_of(scene_with(
         R"({"type": "triangle", "material": "m", "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]],
@@ -360,7 +360,7 @@ TEST_CASE("generated patch: a collapsed corner keeps unit normals, drops flat tr
 
 // ---- the scene file ---------------------------------------------------------------------------
 
-TEST_CASE("scene file: generated meshes become smooth triangles; errors name the field", "[mesh]") {
+TEST_CASE("scene file: generated meshes become smooth triangles, and errors name the field", "[mesh]") {
     const auto s = cg::test::scene_of(scene_with(
         R"({"type": "mesh", "material": "m", "generate": {"shape": "sphere", "radius": 1, "segments": 8}},
            {"type": "mesh", "material": "m", "generate": {"shape": "terrain", "size": [4, 4], "resolution": 3, "seed": 2},
@@ -604,7 +604,7 @@ TEST_CASE("a smooth mesh sphere's image is close to the analytic sphere's", "[me
     }
 }
 
-TEST_CASE("meshes: render-scene matches the golden image (generated sphere, patch, terrain; OBJ)",
+TEST_CASE("meshes: render-scene matches the golden image (generated sphere, patch, terrain, OBJ)",
           "[mesh][golden]") {
     // The OBJ path "../../data/cube.obj" is relative to the scene file: the CLI rebases it.
     const std::string dir = std::string(CG_SOURCE_DIR) + "/tests/golden/ray-tracer/";
