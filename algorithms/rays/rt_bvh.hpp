@@ -43,6 +43,9 @@ struct ObjectBvh {
     bool operator==(const ObjectBvh&) const = default;
 };
 
+// Below this many bounded objects there is no tree: every object is tested for every ray.
+inline constexpr int kMinTreeObjects = 12;
+
 // bounds[k] empty (Bounds{}) marks object k as unbounded.
 ObjectBvh build_bvh(const std::vector<Bounds>& bounds);
 

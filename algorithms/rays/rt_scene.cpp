@@ -529,6 +529,7 @@ void traverse(const ObjectBvh& bvh, const BoxRay& r, double t_min, Limit limit, 
 }  // namespace
 
 Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
+    if (p.bvh.nodes.empty()) return nearest_hit_brute_force(p, origin, d, t_min, t_max, time);
     double best = t_max;
     int object = -1;
     // Brute force's rule: the least t, and on a tie the smaller index.
@@ -573,6 +574,7 @@ Hit nearest_hit_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t_m
 
 int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,
                   double time) {
+    if (p.bvh.nodes.empty()) return first_blocker_brute_force(p, origin, d, t_min, t_max, time);
     // The smallest index among the blockers (brute force's answer): the unbounded objects in
     // order, then every leaf the shadow ray's segment meets, testing only smaller indices.
     int first = -1;
@@ -597,6 +599,7 @@ int first_blocker_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t
 }
 
 bool blocked(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
+    if (p.bvh.nodes.empty()) return first_blocker_brute_force(p, origin, d, t_min, t_max, time) >= 0;
     for (int k : p.bvh.unbounded)
         if (object_t(p.objects[k], origin, d, t_min, time) < t_max) return true;
     bool hit = false;
