@@ -85,6 +85,11 @@ CountedHit brute_nearest(const std::vector<Primitive>& prims, const Ray& ray) {
 CountedHit bvh_nearest(const rt::ObjectBvh& bvh, const std::vector<Primitive>& prims,
                        const Ray& ray) {
     CountedHit h;
+    // Objects outside the tree (all of them in a scene too small for one) are tested one by one.
+    for (int p : bvh.unbounded) {
+        keep(h, p, intersect(prims[static_cast<std::size_t>(p)], ray.origin, ray.direction).t);
+        ++h.primitive_tests;
+    }
     if (bvh.nodes.empty()) return h;
     dvec3 inv;
     bool left_near[3];

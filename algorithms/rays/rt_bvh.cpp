@@ -114,9 +114,7 @@ ObjectBvh build_bvh(const std::vector<Bounds>& bounds) {
         else
             out.items.push_back(k);
     }
-    // A handful of objects is cheaper to test one by one than to reach through boxes (the
-    // reference scene's six quadrics rendered 18 % slower with a tree): all go on the
-    // every-ray list.
+    // A single bounded object needs no tree: everything goes on the every-ray list.
     if (static_cast<int>(out.items.size()) < kMinTreeObjects) {
         out.items.clear();
         out.unbounded.resize(bounds.size());

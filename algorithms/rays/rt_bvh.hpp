@@ -43,8 +43,10 @@ struct ObjectBvh {
     bool operator==(const ObjectBvh&) const = default;
 };
 
-// Below this many bounded objects there is no tree: every object is tested for every ray.
-inline constexpr int kMinTreeObjects = 12;
+// Below this many bounded objects there is no tree: every object is tested for every ray
+// (brute force's own loop). Even the reference scene's six quadrics are faster through the
+// tree (173 against 261 ms, LTO, one thread): a box test is cheaper than a transformed quadric.
+inline constexpr int kMinTreeObjects = 2;
 
 // bounds[k] empty (Bounds{}) marks object k as unbounded.
 ObjectBvh build_bvh(const std::vector<Bounds>& bounds);
