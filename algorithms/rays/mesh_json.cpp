@@ -318,16 +318,28 @@ mesh::Mesh read_obj(const std::string& path, const std::string& field) {
             }
             glm::dvec3 p[3], n[3];
             glm::dvec2 t[3];
+            // Every index checked against what tinyobjloader read, whatever the pre-scan said
+            // (fuzzing found a file whose (u, v) index ran past the texcoords it kept).
+            auto at = [&](int index, std::size_t width, std::size_t size, const char* what) {
+                const std::size_t i = width * static_cast<std::size_t>(index);
+                if (index < 0 || i + width > size)
+                    throw InputError(field, file + ": a face refers to a " + what +
+                                                " the file does not define");
+                return i;
+            };
+            if (k + 3 > sh.mesh.indices.size())
+                throw InputError(field, file + ": a face lists fewer corners than it declares");
             for (int c = 0; c < 3; ++c) {
                 const tinyobj::index_t& ix = sh.mesh.indices[k + c];
-                const std::size_t vi = 3 * static_cast<std::size_t>(ix.vertex_index);
+                const std::size_t vi = at(ix.vertex_index, 3, a.vertices.size(), "vertex (v)");
                 p[c] = {a.vertices[vi], a.vertices[vi + 1], a.vertices[vi + 2]};
                 if (normals) {
-                    const std::size_t ni = 3 * static_cast<std::size_t>(ix.normal_index);
+                    const std::size_t ni = at(ix.normal_index, 3, a.normals.size(), "normal (vn)");
                     n[c] = {a.normals[ni], a.normals[ni + 1], a.normals[ni + 2]};
                 }
                 if (uv) {
-                    const std::size_t ti = 2 * static_cast<std::size_t>(ix.texcoord_index);
+                    const std::size_t ti =
+                        at(ix.texcoord_index, 2, a.texcoords.size(), "texture coordinate (vt)");
                     t[c] = {a.texcoords[ti], a.texcoords[ti + 1]};
                 }
             }
