@@ -53,19 +53,6 @@ void keep(CountedHit& h, int k, double t) {
     if (t < h.t || (t == h.t && t < CountedHit::kInf && k < h.primitive)) h.t = t, h.primitive = k;
 }
 
-// The slab test of a node's box for t ∈ [0, t1]: where the ray enters it, or ∞ for a miss.
-// 1/d of a zero component is ±10³⁰⁰, not ∞, so a face through the origin gives 0, not NaN.
-double box_entry(const Bounds& b, dvec3 origin, dvec3 inv, double t1) {
-    double t0 = 0;
-    for (int i = 0; i < 3; ++i) {
-        double a = (b.min[i] - origin[i]) * inv[i], c = (b.max[i] - origin[i]) * inv[i];
-        if (a > c) std::swap(a, c);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, c);
-    }
-    return t0 <= t1 ? t0 : CountedHit::kInf;
-}
-
 double ms_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -90,49 +77,14 @@ CountedHit bvh_nearest(const rt::ObjectBvh& bvh, const std::vector<Primitive>& p
         keep(h, p, intersect(prims[static_cast<std::size_t>(p)], ray.origin, ray.direction).t);
         ++h.primitive_tests;
     }
-    if (bvh.nodes.empty()) return h;
-    dvec3 inv;
-    bool left_near[3];
-    for (int i = 0; i < 3; ++i) {
-        const double v = 1 / ray.direction[i];
-        inv[i] = std::isfinite(v) ? v : std::copysign(1e300, ray.direction[i]);
-        left_near[i] = ray.direction[i] >= 0;
-    }
-    struct Entry {
-        int node;
-        double t;
-    };
-    Entry stack[rt::kMaxBvhDepth + 2];
-    int top = 0;
-    ++h.box_tests;
-    const double t_root = box_entry(bvh.nodes[0].box, ray.origin, inv, h.t);
-    if (t_root == CountedHit::kInf) return h;
-    stack[top++] = {0, t_root};
-    while (top > 0) {
-        const Entry e = stack[--top];
-        if (e.t > h.t) continue;  // entered beyond the best hit: nothing nearer inside
-        const rt::BvhNode& node = bvh.nodes[static_cast<std::size_t>(e.node)];
-        if (node.count > 0) {
-            for (int k = node.first; k < node.first + node.count; ++k) {
-                const int p = bvh.items[static_cast<std::size_t>(k)];
-                keep(h, p,
-                     intersect(prims[static_cast<std::size_t>(p)], ray.origin, ray.direction).t);
-                ++h.primitive_tests;
-            }
-            continue;
-        }
-        const int left = e.node + 1, right = node.right;
-        h.box_tests += 2;
-        const double tl =
-            box_entry(bvh.nodes[static_cast<std::size_t>(left)].box, ray.origin, inv, h.t);
-        const double tr =
-            box_entry(bvh.nodes[static_cast<std::size_t>(right)].box, ray.origin, inv, h.t);
-        const bool ln = left_near[node.axis];
-        const int far = ln ? right : left, near = ln ? left : right;
-        const double t_far = ln ? tr : tl, t_near = ln ? tl : tr;
-        if (t_far != CountedHit::kInf) stack[top++] = {far, t_far};
-        if (t_near != CountedHit::kInf) stack[top++] = {near, t_near};
-    }
+    rt::traverse(
+        bvh, rt::box_ray(ray.origin, ray.direction), 0, [&] { return h.t; },
+        [&](int p) {
+            keep(h, p, intersect(prims[static_cast<std::size_t>(p)], ray.origin, ray.direction).t);
+            ++h.primitive_tests;
+            return false;
+        },
+        &h.box_tests);
     return h;
 }
 

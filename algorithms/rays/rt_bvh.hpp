@@ -20,7 +20,10 @@
 // force's rule, so the image and the hits are the same with and without the hierarchy.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "accel/primitive.hpp"
@@ -53,5 +56,75 @@ ObjectBvh build_bvh(const std::vector<Bounds>& bounds);
 
 // The stack traversal needs at most depth + 1 entries; build_bvh keeps depth below this.
 inline constexpr int kMaxBvhDepth = 64;
+
+// ---- traversal (the tracer's nearest hit and shadow rays, the complexity lab's counts) ----
+
+// The ray as the box tests want it: 1/d per axis. A zero component gets 1/d = 10³⁰⁰ instead
+// of ∞, so that a box face through the origin gives 0 · 10³⁰⁰ = 0, never 0 · ∞ = NaN; the
+// slab is then [0, ±huge], which is right: the origin is on the face.
+struct BoxRay {
+    glm::dvec3 origin, inv;
+    int near_first[3];  // per split axis: 1 when the left child is the near one
+};
+
+inline BoxRay box_ray(glm::dvec3 origin, glm::dvec3 d) {
+    BoxRay r;
+    r.origin = origin;
+    for (int i = 0; i < 3; ++i) {
+        const double inv = 1 / d[i];
+        r.inv[i] = std::isfinite(inv) ? inv : std::copysign(1e300, d[i]);
+        r.near_first[i] = d[i] >= 0;
+    }
+    return r;
+}
+
+// The slab test on a node's box for t in [t0, t1]: where the ray enters it, or +∞ for a miss.
+inline double box_entry(const Bounds& b, const BoxRay& r, double t0, double t1) {
+    for (int i = 0; i < 3; ++i) {
+        double a = (b.min[i] - r.origin[i]) * r.inv[i], c = (b.max[i] - r.origin[i]) * r.inv[i];
+        if (a > c) std::swap(a, c);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, c);
+    }
+    return t0 <= t1 ? t0 : std::numeric_limits<double>::infinity();
+}
+
+// Front-to-back traversal: visit(object) for each object of each leaf whose box the ray meets
+// at t ≤ limit(); visit returns true to stop.
+template <class Limit, class Visit>
+void traverse(const ObjectBvh& bvh, const BoxRay& r, double t_min, Limit limit, Visit visit,
+              long long* box_tests = nullptr) {
+    if (bvh.nodes.empty()) return;
+    struct Entry {
+        int node;
+        double t;
+    };
+    Entry stack[kMaxBvhDepth + 2];
+    int top = 0;
+    const double t0 = box_entry(bvh.nodes[0].box, r, t_min, limit());
+    if (box_tests) ++*box_tests;
+    if (t0 == std::numeric_limits<double>::infinity()) return;
+    stack[top++] = {0, t0};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.t > limit()) continue;  // entered beyond the best hit: nothing nearer inside
+        const BvhNode& n = bvh.nodes[e.node];
+        if (n.count > 0) {
+            for (int k = n.first; k < n.first + n.count; ++k)
+                if (visit(bvh.items[k])) return;
+            continue;
+        }
+        const int left = e.node + 1, right = n.right;
+        if (box_tests) *box_tests += 2;
+        const double tl = box_entry(bvh.nodes[left].box, r, t_min, limit());
+        const double tr = box_entry(bvh.nodes[right].box, r, t_min, limit());
+        // Push the far child first so that the near one is popped next.
+        const bool left_near = r.near_first[n.axis] != 0;
+        const int far = left_near ? right : left, near = left_near ? left : right;
+        const double t_far = left_near ? tr : tl, t_near = left_near ? tl : tr;
+        if (t_far != std::numeric_limits<double>::infinity()) stack[top++] = {far, t_far};
+        if (t_near != std::numeric_limits<double>::infinity()) stack[top++] = {near, t_near};
+    }
+}
 
 }  // namespace cg::rt
