@@ -8,6 +8,7 @@ packages=(
   cmake ninja-build g++ pkg-config make
   libsdl2-dev libimgui-dev libglm-dev catch2 libstb-dev
   nlohmann-json3-dev libcli11-dev libbenchmark-dev libpolyclipping-dev libtinyobjloader-dev
+  libembree-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core xdotool libx11-dev
   clang libclang-rt-14-dev
   optipng pngquant
