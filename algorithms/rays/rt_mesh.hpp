@@ -5,9 +5,11 @@
 // What is kept per triangle is what the ray test needs and nothing else, in the order the leaves
 // list them: p0, e1 = p1 − p0, e2 = p2 − p0 (72 bytes, doubles, so that a hit is exactly the one
 // a lone triangle object gives), and the triangle's index in the mesh (4 bytes), for its vertex
-// normals and (u, v). A node is one 64-byte cache line holding the boxes of both its children
-// (floats, rounded outward, so that a box only ever grows), so that one node visited is one
-// line read and two slab tests done side by side.
+// normals and (u, v). A node holds the boxes of its four children (floats, rounded outward, so
+// that a box only ever grows) in two 64-byte cache lines: one node visited is one short read
+// and four slab tests, two at a time. Four children a node halve the tree's depth, and the
+// depth is what a ray waits for: each level is a read from memory that cannot start before the
+// one above is done.
 //
 // The build is the binned surface area heuristic (as rt_bvh.hpp's, over the three axes with 32
 // bins each): a node of n triangles is split at the bin boundary where
@@ -19,6 +21,9 @@
 // padded by 2⁻³⁰ of their largest coordinate before rounding to float, so that a hit on an
 // edge shared with a box face is never lost to a slab test's rounding, even for a flat terrain's
 // boxes of zero height.
+//
+// The binary tree is then collapsed into the four-wide one: a node takes its two children and,
+// while it has room, replaces the inner child of largest area by that child's two.
 //
 // Traversal: the nearer child first, a subtree skipped when entered beyond the best hit; ties in
 // t go to the smaller triangle index, so the answer is brute force's, whatever the tree.
@@ -35,11 +40,11 @@
 namespace cg::rt {
 
 struct alignas(64) MeshNode {
-    float lo[3][2], hi[3][2];  // child k's box: [lo[axis][k], hi[axis][k]] per axis
-    std::int32_t child[2];     // an inner child's node index, or a leaf's first triangle
-    std::int32_t count[2];     // 0: an inner child; else the leaf's triangle count
+    float lo[3][4], hi[3][4];  // child k's box: [lo[axis][k], hi[axis][k]] per axis
+    std::int32_t child[4];     // an inner child's node index, or a leaf's first triangle
+    std::int32_t count[4];     // 0: an inner child; > 0 the leaf's triangle count; −1: empty
 };
-static_assert(sizeof(MeshNode) == 64);
+static_assert(sizeof(MeshNode) == 128);
 
 struct MeshTriangle {
     glm::dvec3 p0, e1, e2;

@@ -187,6 +187,16 @@ void BM_MeshPrimary_Ours(benchmark::State& state) {
             hits += rt::mesh_nearest(s.bvh, s.origins[r], s.directions[r], 1e-9, INFINITY, h);
         }
     }
+    // What a ray costs: box tests and triangle tests, on average.
+    long long boxes = 0, triangles = 0;
+    for (std::size_t r = 0; r < s.origins.size(); ++r) {
+        rt::MeshHit h;
+        rt::mesh_nearest(s.bvh, s.origins[r], s.directions[r], 1e-9, INFINITY, h, &boxes,
+                         &triangles);
+    }
+    const double rays = static_cast<double>(s.origins.size());
+    state.counters["boxes/ray"] = static_cast<double>(boxes) / rays;
+    state.counters["triangles/ray"] = static_cast<double>(triangles) / rays;
     state.counters["hits"] = static_cast<double>(hits);
     state.counters["rays/s"] = benchmark::Counter(
         static_cast<double>(s.origins.size()) * static_cast<double>(state.iterations()),

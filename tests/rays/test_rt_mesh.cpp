@@ -203,8 +203,8 @@ TEST_CASE("mesh hierarchy: the same tree on one thread or two; generated meshes"
     for (std::uint32_t id : one.ids) ++seen[id];
     REQUIRE(std::count(seen.begin(), seen.end(), 1) == static_cast<long>(seen.size()));
     for (const rt::MeshNode& n : one.nodes)
-        for (int k = 0; k < 2; ++k) {
-            if (n.count[k] == 0) continue;
+        for (int k = 0; k < 4; ++k) {
+            if (n.count[k] <= 0) continue;
             for (int t = n.child[k]; t < n.child[k] + n.count[k]; ++t)
                 for (const dvec3 p :
                      {one.triangles[t].p0, one.triangles[t].p0 + one.triangles[t].e1,
