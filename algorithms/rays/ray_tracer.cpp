@@ -554,6 +554,15 @@ std::string object_name(const rt::Scene& sc, int k) {
     return k < 0 ? std::string("nothing") : sc.objects[k].name;
 }
 
+// What a ray hit: the object's name, and for a mesh which of its triangles ("terrain.triangles[7]").
+std::string hit_name(const rt::Scene& sc, const rt::Hit& h) {
+    if (h.object < 0) return "nothing";
+    const rt::Object& o = sc.objects[h.object];
+    if (o.kind != rt::ObjectKind::Mesh || h.triangle < 0) return o.name;
+    return o.name + ".triangles[" +
+           std::to_string(o.mesh->source_index(static_cast<std::size_t>(h.triangle))) + "]";
+}
+
 std::vector<double> colour_vec(const Color& c) {
     return {c.x, c.y, c.z};
 }
@@ -763,7 +772,7 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
         case Event::Hit: {
             const rt::Material& m = sc.materials[s.prepared->objects[n.hit.object].material];
             info.narration =
-                "Ray " + name + " first hits " + object_name(sc, n.hit.object) +
+                "Ray " + name + " first hits " + hit_name(sc, n.hit) +
                 " at t = " + num(n.hit.t, 6) + ": P = " + num(n.hit.point, 4) +
                 ", n = " + num(n.hit.normal, 4) +
                 (n.hit.entering ? "" : " (from inside: the normal is turned to face the ray)") +
@@ -773,7 +782,7 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
             if (sc.objects[n.hit.object].kind == rt::ObjectKind::Csg)
                 narrate_csg_hit(sc.objects[n.hit.object], *s.prepared->objects[n.hit.object].csg,
                                 n, info);
-            add("object", object_name(sc, n.hit.object));
+            add("object", hit_name(sc, n.hit));
             add("t", n.hit.t);
             add("P", vec(n.hit.point));
             add("n", vec(n.hit.normal));
@@ -994,6 +1003,21 @@ void draw_objects(const rt::Scene& sc, double extent, Scene& scene) {
                 if (++triangles > kMaxDrawnTriangles) break;
                 scene.faces3.push_back({{o.p0, o.p1, o.p2}, style, 0.5f, true, true});
                 break;
+            case rt::ObjectKind::Mesh: {
+                const mesh::Mesh& m = o.mesh->mesh;
+                const std::size_t room =
+                    triangles < kMaxDrawnTriangles ? kMaxDrawnTriangles - triangles : 0;
+                for (std::size_t k = 0; k < std::min(room, m.triangles.size()); ++k) {
+                    const auto& t = m.triangles[k];
+                    scene.faces3.push_back({{m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]},
+                                            style,
+                                            0.5f,
+                                            true,
+                                            true});
+                }
+                triangles += m.triangles.size();
+                break;
+            }
             case rt::ObjectKind::Csg:  // every primitive of the tree, fainter than a solid
                 for (std::size_t k = 0; k < o.csg.nodes.size(); ++k)
                     if (o.csg.nodes[k].leaf)

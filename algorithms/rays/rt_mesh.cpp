@@ -237,6 +237,24 @@ int collapse(const std::vector<Node2>& in, int b, std::vector<MeshNode>& out, in
     return index;
 }
 
+float slot_area(const MeshNode& n, int k) {
+    const float x = n.hi[0][k] - n.lo[0][k], y = n.hi[1][k] - n.lo[1][k],
+                z = n.hi[2][k] - n.lo[2][k];
+    return 2 * (x * y + y * z + z * x);
+}
+
+// Σ over the node's children: P(entered) × (its four box tests, or its triangle tests).
+double subtree_cost(const std::vector<MeshNode>& nodes, int index, double root_area) {
+    const MeshNode& n = nodes[index];
+    double c = 0;
+    for (int k = 0; k < 4; ++k) {
+        if (n.count[k] < 0) continue;
+        const double p = root_area > 0 ? std::min(1.0, slot_area(n, k) / root_area) : 1.0;
+        c += n.count[k] > 0 ? p * n.count[k] : p * 4 + subtree_cost(nodes, n.child[k], root_area);
+    }
+    return c;
+}
+
 }  // namespace
 
 MeshBvh build_mesh_bvh(const mesh::Mesh& m, int threads) {
@@ -273,6 +291,8 @@ MeshBvh build_mesh_bvh(const mesh::Mesh& m, int threads) {
         out.nodes.reserve(binary.size() / 2 + 1);
         out.root = collapse(binary, r.index, out.nodes, 1, out.depth);
     }
+    // The root's box test, then its four children's (or its triangles), then the subtrees'.
+    out.cost = 1 + (r.count > 0 ? r.count : 4 + subtree_cost(out.nodes, out.root, root.area()));
     out.triangles.resize(n);
     out.ids.resize(n);
     for (std::size_t k = 0; k < n; ++k) {

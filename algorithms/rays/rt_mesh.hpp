@@ -57,7 +57,10 @@ struct MeshBvh {
     float root_lo[3]{}, root_hi[3]{};       // the whole mesh's box
     std::int32_t root = 0, root_count = 0;  // the root: a node (count 0) or a leaf
     int depth = 0;                          // nodes on the longest root-to-leaf path
-    std::size_t bytes() const;              // what the structure holds (nodes, triangles, ids)
+    // What a ray that meets the mesh's box costs, expected (the surface area heuristic: a box is
+    // entered with probability its area over the root's): box tests + triangle tests.
+    double cost = 0;
+    std::size_t bytes() const;  // what the structure holds (nodes, triangles, ids)
 };
 
 // Preconditions: the vertices are finite and the indices valid. threads 0: both cores (2).

@@ -92,8 +92,25 @@ double shadow_rays(const Scene& s) {
 
 double scene_tests(const Scene& s) {
     double n = 0;
-    for (const Object& o : s.objects) n += static_cast<double>(object_tests(o));
+    for (const Object& o : s.objects)
+        n += o.kind == ObjectKind::Mesh ? o.mesh->bvh.cost : static_cast<double>(object_tests(o));
     return n;
+}
+
+std::size_t scene_triangles(const Scene& s) {
+    std::size_t n = 0;
+    for (const Object& o : s.objects)
+        if (o.kind == ObjectKind::Mesh) n += o.mesh->mesh.triangles.size();
+    return n;
+}
+
+TriangleMesh make_triangle_mesh(mesh::Mesh m, std::vector<std::uint32_t> source) {
+    TriangleMesh t;
+    for (dvec3& n : m.normals) n = unit(n);  // as a triangle object's are, in prepare
+    t.bvh = build_mesh_bvh(m);
+    t.mesh = std::move(m);
+    t.source = std::move(source);
+    return t;
 }
 
 double pixel_work(const Scene& s) {
@@ -217,10 +234,15 @@ void validate(const Scene& s) {
         }
     }
 
+    if (scene_triangles(s) > kMaxTriangles)
+        throw InputError("objects", "has " + std::to_string(scene_triangles(s)) +
+                                        " triangles in its meshes; the limit is " +
+                                        std::to_string(kMaxTriangles));
     if (scene_tests(s) > static_cast<double>(kMaxObjects))
-        throw InputError("objects", "has " + num(scene_tests(s)) +
-                                        " objects (triangles and CSG leaves counted one by one); "
-                                        "the limit is " +
+        throw InputError("objects", "costs " + num(scene_tests(s), 4) +
+                                        " ray-object tests per ray (triangles and CSG leaves "
+                                        "counted one by one, a mesh as its hierarchy's expected "
+                                        "cost); the limit is " +
                                         std::to_string(kMaxObjects));
     // What a run would cost, now that the counts are known to be sane.
     const double per_pixel = pixel_work(s);
@@ -287,6 +309,27 @@ void validate(const Scene& s) {
             case ObjectKind::Csg:
                 validate_csg_object(o);
                 break;
+            case ObjectKind::Mesh: {
+                const mesh::Mesh& m = o.mesh->mesh;
+                if (m.triangles.empty()) throw InputError(o.field, "has no triangles");
+                for (std::size_t k = 0; k < m.vertices.size(); ++k)
+                    check_coordinates(m.vertices[k], o.field + ".vertices[" + std::to_string(k) + "]");
+                if (!m.normals.empty() && m.normals.size() != m.vertices.size())
+                    throw InputError(o.field + ".normals", "must give one normal per vertex");
+                for (std::size_t k = 0; k < m.normals.size(); ++k)
+                    if (!(std::fabs(glm::length(m.normals[k]) - 1) < 1e-9))
+                        throw InputError(o.field + ".normals[" + std::to_string(k) + "]",
+                                         "must be a nonzero, finite normal");
+                if (!m.uv.empty() && m.uv.size() != m.vertices.size())
+                    throw InputError(o.field + ".uv", "must give one (u, v) per vertex");
+                for (const auto& t : m.triangles)
+                    for (std::uint32_t i : t)
+                        if (i >= m.vertices.size())
+                            throw InputError(o.field + ".triangles",
+                                             "refers to vertex " + std::to_string(i) + ", but only " +
+                                                 std::to_string(m.vertices.size()) + " are given");
+                break;
+            }
         }
     }
     validate_textures(s);
@@ -351,6 +394,12 @@ Prepared prepare(const Scene& s) {
                 for (const PreparedCsgLeaf& l : q.csg->leaves)
                     scale = std::max(scale, glm::length(l.quadric.translation));
                 break;
+            case ObjectKind::Mesh:
+                q.mesh = o.mesh;
+                for (const auto& t : o.mesh->mesh.triangles)
+                    for (std::uint32_t i : t)
+                        scale = std::max(scale, glm::length(o.mesh->mesh.vertices[i]));
+                break;
         }
         p.objects.push_back(q);
     }
@@ -377,20 +426,11 @@ double intersect_object(const PreparedObject& o, dvec3 origin, dvec3 d, double t
             const double t = glm::dot(o.p0 - origin, o.normal) / dn;
             return t > t_min ? t : kInf;
         }
-        case ObjectKind::Triangle: {
-            // Möller-Trumbore: solve E + t d = P0 + β e1 + γ e2 by Cramer's rule.
-            const dvec3 pv = glm::cross(d, o.e2);
-            const double det = glm::dot(o.e1, pv);
-            if (std::fabs(det) <= 1e-15 * glm::length(o.e1) * glm::length(pv)) return kInf;
-            const double inv = 1 / det;
-            const dvec3 tv = origin - o.p0;
-            const double beta = glm::dot(tv, pv) * inv;
-            if (beta < 0 || beta > 1) return kInf;
-            const dvec3 qv = glm::cross(tv, o.e1);
-            const double gamma = glm::dot(d, qv) * inv;
-            if (gamma < 0 || beta + gamma > 1) return kInf;
-            const double t = glm::dot(o.e2, qv) * inv;
-            return t > t_min ? t : kInf;
+        case ObjectKind::Triangle:  // Möller-Trumbore (rays/rt_mesh.hpp)
+            return triangle_t(o.p0, o.e1, o.e2, origin, d, t_min);
+        case ObjectKind::Mesh: {
+            MeshHit h;
+            return mesh_nearest(o.mesh->bvh, origin, d, t_min, kInf, h) ? h.t : kInf;
         }
         case ObjectKind::Csg:
             return intersect_csg(*o.csg, origin, d, t_min);
@@ -398,28 +438,59 @@ double intersect_object(const PreparedObject& o, dvec3 origin, dvec3 d, double t
     return kInf;
 }
 
+namespace {
+
+// A triangle's shading normal at `point` (on it): the flat one, or, with vertex normals n0, n1,
+// n2 (unit), their interpolation at the point's barycentric coordinates.
+dvec3 triangle_normal(dvec3 p0, dvec3 e1, dvec3 e2, dvec3 flat, const dvec3* vertex_normals,
+                      dvec3 point, dvec3 d) {
+    if (!vertex_normals) return flat;
+    // The hit's barycentric coordinates: point − p0 = β e1 + γ e2, by the areas of the
+    // sub-triangles over N = e1 × e2 (Möller-Trumbore's β, γ for a point on the triangle).
+    const dvec3 q = point - p0, N = glm::cross(e1, e2);
+    const double nn = glm::dot(N, N);
+    const double beta = glm::dot(glm::cross(q, e2), N) / nn;
+    const double gamma = glm::dot(glm::cross(e1, q), N) / nn;
+    dvec3 n = (1 - beta - gamma) * vertex_normals[0] + beta * vertex_normals[1] +
+              gamma * vertex_normals[2];
+    const double len = glm::length(n);
+    if (!(len > 0) || !std::isfinite(len)) return flat;  // opposed normals: flat
+    n /= len;
+    // Near the outline the interpolated normal can face away from a ray that meets the
+    // triangle's front (or the other way round): it is then bent, along the ray, just far
+    // enough to lie on the geometric normal's side, so that which side the ray came from
+    // (entering or leaving) is the geometric one.
+    const dvec3 dn = unit(d);
+    const double a = glm::dot(n, dn), b = glm::dot(flat, dn);
+    if (b != 0 && (a < 0) != (b < 0)) n = unit(n + (std::copysign(1e-3, b) - a) * dn);
+    return n;
+}
+
+// A mesh triangle's normal, as a triangle object with the same corners (and vertex normals)
+// would have it.
+dvec3 mesh_triangle_normal(const TriangleMesh& tm, int triangle, dvec3 point, dvec3 d) {
+    const mesh::Mesh& m = tm.mesh;
+    const auto& t = m.triangles[static_cast<std::size_t>(triangle)];
+    const dvec3 p0 = m.vertices[t[0]], e1 = m.vertices[t[1]] - p0, e2 = m.vertices[t[2]] - p0;
+    const dvec3 flat = unit(glm::cross(e1, e2));
+    if (m.normals.empty()) return flat;
+    const dvec3 n[3] = {m.normals[t[0]], m.normals[t[1]], m.normals[t[2]]};
+    return triangle_normal(p0, e1, e2, flat, n, point, d);
+}
+
+}  // namespace
+
 dvec3 object_normal(const PreparedObject& o, dvec3 point, dvec3 origin, dvec3 d, double t_min) {
     if (o.kind == ObjectKind::Quadric) return normal_at(o.quadric, point);
     if (o.kind == ObjectKind::Csg) return csg_hit_normal(*o.csg, origin, d, t_min);
+    if (o.kind == ObjectKind::Mesh) {  // which triangle: the ray's nearest (the one it hit)
+        MeshHit h;
+        if (!mesh_nearest(o.mesh->bvh, origin, d, t_min, Quadric::kInf, h)) return dvec3(0.0);
+        return mesh_triangle_normal(*o.mesh, static_cast<int>(h.triangle), point, d);
+    }
     if (o.kind == ObjectKind::Triangle && o.smooth) {
-        // The hit's barycentric coordinates: point − p0 = β e1 + γ e2, by the areas of the
-        // sub-triangles over N = e1 × e2 (Möller-Trumbore's β, γ for a point on the triangle).
-        const dvec3 q = point - o.p0, N = glm::cross(o.e1, o.e2);
-        const double nn = glm::dot(N, N);
-        const double beta = glm::dot(glm::cross(q, o.e2), N) / nn;
-        const double gamma = glm::dot(glm::cross(o.e1, q), N) / nn;
-        dvec3 n = (1 - beta - gamma) * o.n0 + beta * o.n1 + gamma * o.n2;
-        const double len = glm::length(n);
-        if (!(len > 0) || !std::isfinite(len)) return o.normal;  // opposed normals: flat
-        n /= len;
-        // Near the outline the interpolated normal can face away from a ray that meets the
-        // triangle's front (or the other way round): it is then bent, along the ray, just far
-        // enough to lie on the geometric normal's side, so that which side the ray came from
-        // (entering or leaving) is the geometric one.
-        const dvec3 dn = unit(d);
-        const double a = glm::dot(n, dn), b = glm::dot(o.normal, dn);
-        if (b != 0 && (a < 0) != (b < 0)) n = unit(n + (std::copysign(1e-3, b) - a) * dn);
-        return n;
+        const dvec3 n[3] = {o.n0, o.n1, o.n2};
+        return triangle_normal(o.p0, o.e1, o.e2, o.normal, n, point, d);
     }
     return o.normal;
 }
@@ -435,73 +506,117 @@ namespace {
 
 constexpr double kInf = Quadric::kInf;
 
-// One object's t at `time` (a moving object is tested where it is then).
-double object_t(const PreparedObject& o, dvec3 origin, dvec3 d, double t_min, double time) {
-    return o.moving ? intersect_object(o, origin - o.velocity * time, d, t_min)
-                    : intersect_object(o, origin, d, t_min);
+// One object's t at `time` (a moving object is tested where it is then). A mesh is searched
+// for t < t_max only (its hierarchy prunes by it), and tells which triangle it hit; `brute`
+// tests every one of its triangles instead (the reference).
+double object_t(const PreparedObject& o, dvec3 origin, dvec3 d, double t_min, double time,
+                double t_max = kInf, int* triangle = nullptr, bool brute = false,
+                TraversalCounts* counts = nullptr) {
+    if (o.moving) origin -= o.velocity * time;
+    if (o.kind != ObjectKind::Mesh) return intersect_object(o, origin, d, t_min);
+    if (brute) {
+        const mesh::Mesh& m = o.mesh->mesh;
+        double best = t_max;
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            const dvec3 p0 = m.vertices[m.triangles[k][0]];
+            const double t = triangle_t(p0, m.vertices[m.triangles[k][1]] - p0,
+                                        m.vertices[m.triangles[k][2]] - p0, origin, d, t_min);
+            if (t < best) best = t, *triangle = static_cast<int>(k);
+        }
+        return best < t_max ? best : kInf;
+    }
+    MeshHit h;
+    long long boxes = 0, tests = 0;
+    const bool found = mesh_nearest(o.mesh->bvh, origin, d, t_min, t_max, h,
+                                    counts ? &boxes : nullptr, counts ? &tests : nullptr);
+    if (counts) counts->box_tests += boxes, counts->object_tests += tests;
+    if (!found) return kInf;
+    if (triangle) *triangle = static_cast<int>(h.triangle);
+    return h.t;
 }
 
-// The hit's normal and side, once the nearest object is known.
-Hit finish_hit(const Prepared& p, int object, double t, dvec3 origin, dvec3 d, double t_min,
-               double time) {
+// Whether the object lies on the ray at t_min < t < t_max (a mesh: any of its triangles).
+bool object_blocks(const PreparedObject& o, dvec3 origin, dvec3 d, double t_min, double t_max,
+                   double time) {
+    if (o.kind != ObjectKind::Mesh) return object_t(o, origin, d, t_min, time) < t_max;
+    if (o.moving) origin -= o.velocity * time;
+    return mesh_occluded(o.mesh->bvh, origin, d, t_min, t_max);
+}
+
+// The hit's normal and side, once the nearest object (and a mesh's triangle) is known.
+Hit finish_hit(const Prepared& p, int object, int triangle, double t, dvec3 origin, dvec3 d,
+               double t_min, double time) {
     Hit h;
     h.object = object;
+    h.triangle = triangle;
     h.t = t;
     h.point = origin + t * d;
-    const dvec3 shift = offset_at(p.objects[object], time);
-    dvec3 n = p.objects[object].moving
-                  ? object_normal(p.objects[object], h.point - shift, origin - shift, d, t_min)
-                  : object_normal(p.objects[object], h.point, origin, d, t_min);
+    const PreparedObject& o = p.objects[object];
+    const dvec3 shift = offset_at(o, time);
+    dvec3 n = o.kind == ObjectKind::Mesh ? mesh_triangle_normal(*o.mesh, triangle, h.point - shift, d)
+              : o.moving ? object_normal(o, h.point - shift, origin - shift, d, t_min)
+                         : object_normal(o, h.point, origin, d, t_min);
     if (n == dvec3(0.0)) n = -unit(d);  // a cone's apex: no gradient; face the ray
     h.entering = glm::dot(n, d) <= 0;   // a grazing ray counts as arriving from outside
     h.normal = h.entering ? n : -n;
     return h;
 }
 
+// The nearest-hit search with brute force's rule: the least t, and on a tie the smaller object
+// index (a mesh is searched up to just past the best t when it comes first, to see the tie).
+struct Nearest {
+    double best;
+    int object = -1, triangle = -1;
+    void test(const Prepared& p, int k, dvec3 origin, dvec3 d, double t_min, double time,
+              TraversalCounts* counts = nullptr) {
+        int tri = -1;
+        const double limit = object >= 0 && k < object ? std::nextafter(best, kInf) : best;
+        const double t = object_t(p.objects[k], origin, d, t_min, time, limit, &tri, false, counts);
+        if (t < best || (t == best && object >= 0 && k < object)) best = t, object = k, triangle = tri;
+    }
+};
+
 }  // namespace
 
 Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
     if (p.bvh.nodes.empty()) return nearest_hit_brute_force(p, origin, d, t_min, t_max, time);
-    double best = t_max;
-    int object = -1;
-    // Brute force's rule: the least t, and on a tie the smaller index.
+    Nearest n{t_max};
     auto test = [&](int k) {
-        const double t = object_t(p.objects[k], origin, d, t_min, time);
-        if (t < best || (t == best && object >= 0 && k < object)) best = t, object = k;
+        n.test(p, k, origin, d, t_min, time);
         return false;
     };
     for (int k : p.bvh.unbounded) test(k);
-    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return best; }, test);
-    if (object < 0) return Hit{};
-    return finish_hit(p, object, best, origin, d, t_min, time);
+    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return n.best; }, test);
+    if (n.object < 0) return Hit{};
+    return finish_hit(p, n.object, n.triangle, n.best, origin, d, t_min, time);
 }
 
 TraversalCounts traversal_counts(const Prepared& p, dvec3 origin, dvec3 d, double t_min,
                                  double t_max, double time) {
     TraversalCounts c;
-    double best = t_max;
-    int object = -1;
+    Nearest n{t_max};
     auto test = [&](int k) {
-        ++c.object_tests;
-        const double t = object_t(p.objects[k], origin, d, t_min, time);
-        if (t < best || (t == best && object >= 0 && k < object)) best = t, object = k;
+        // A mesh counts its own box and triangle tests (and not itself as one object test).
+        if (p.objects[k].kind != ObjectKind::Mesh) ++c.object_tests;
+        n.test(p, k, origin, d, t_min, time, &c);
         return false;
     };
     for (int k : p.bvh.unbounded) test(k);
-    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return best; }, test, &c.box_tests);
+    traverse(p.bvh, box_ray(origin, d), t_min, [&] { return n.best; }, test, &c.box_tests);
     return c;
 }
 
 Hit nearest_hit_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,
                             double time) {
     double best = t_max;
-    int object = -1;
+    int object = -1, triangle = -1;
     for (std::size_t k = 0; k < p.objects.size(); ++k) {
-        const double t = object_t(p.objects[k], origin, d, t_min, time);
-        if (t < best) best = t, object = static_cast<int>(k);
+        int tri = -1;
+        const double t = object_t(p.objects[k], origin, d, t_min, time, best, &tri, true);
+        if (t < best) best = t, object = static_cast<int>(k), triangle = tri;
     }
     if (object < 0) return Hit{};
-    return finish_hit(p, object, best, origin, d, t_min, time);
+    return finish_hit(p, object, triangle, best, origin, d, t_min, time);
 }
 
 int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,
@@ -511,12 +626,12 @@ int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double
     // order, then every leaf the shadow ray's segment meets, testing only smaller indices.
     int first = -1;
     for (int k : p.bvh.unbounded)
-        if (object_t(p.objects[k], origin, d, t_min, time) < t_max) {
+        if (object_blocks(p.objects[k], origin, d, t_min, t_max, time)) {
             first = k;
             break;
         }
     traverse(p.bvh, box_ray(origin, d), t_min, [&] { return t_max; }, [&](int k) {
-        if ((first < 0 || k < first) && object_t(p.objects[k], origin, d, t_min, time) < t_max)
+        if ((first < 0 || k < first) && object_blocks(p.objects[k], origin, d, t_min, t_max, time))
             first = k;
         return false;
     });
@@ -525,18 +640,25 @@ int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double
 
 int first_blocker_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t_min,
                               double t_max, double time) {
-    for (std::size_t k = 0; k < p.objects.size(); ++k)
-        if (object_t(p.objects[k], origin, d, t_min, time) < t_max) return static_cast<int>(k);
+    for (std::size_t k = 0; k < p.objects.size(); ++k) {
+        int tri = -1;
+        if (object_t(p.objects[k], origin, d, t_min, time, t_max, &tri, true) < t_max)
+            return static_cast<int>(k);
+    }
     return -1;
 }
 
 bool blocked(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
-    if (p.bvh.nodes.empty()) return first_blocker_brute_force(p, origin, d, t_min, t_max, time) >= 0;
+    if (p.bvh.nodes.empty()) {
+        for (const PreparedObject& o : p.objects)
+            if (object_blocks(o, origin, d, t_min, t_max, time)) return true;
+        return false;
+    }
     for (int k : p.bvh.unbounded)
-        if (object_t(p.objects[k], origin, d, t_min, time) < t_max) return true;
+        if (object_blocks(p.objects[k], origin, d, t_min, t_max, time)) return true;
     bool hit = false;
     traverse(p.bvh, box_ray(origin, d), t_min, [&] { return t_max; }, [&](int k) {
-        return hit = object_t(p.objects[k], origin, d, t_min, time) < t_max;
+        return hit = object_blocks(p.objects[k], origin, d, t_min, t_max, time);
     });
     return hit;
 }
@@ -607,6 +729,10 @@ Bounds object_bounds(const Object& o) {
             }
             return b;
         }
+        case ObjectKind::Mesh:  // its hierarchy's root box (padded, rounded outward)
+            for (int a = 0; a < 3; ++a)
+                b.min[a] = o.mesh->bvh.root_lo[a], b.max[a] = o.mesh->bvh.root_hi[a];
+            return b;
         case ObjectKind::Plane:
         case ObjectKind::Csg:
             return {};

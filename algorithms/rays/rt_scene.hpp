@@ -62,7 +62,9 @@
 #include "core/shared.hpp"
 #include "rays/csg.hpp"
 #include "rays/quadric.hpp"
+#include "rays/mesh_gen.hpp"
 #include "rays/rt_bvh.hpp"
+#include "rays/rt_mesh.hpp"
 #include "rays/rt_texture.hpp"
 #include "sampling/patterns.hpp"
 
@@ -100,7 +102,25 @@ struct Light {
     bool operator==(const Light&) const = default;
 };
 
-enum class ObjectKind : std::uint8_t { Quadric, Plane, Triangle, Csg };
+enum class ObjectKind : std::uint8_t { Quadric, Plane, Triangle, Csg, Mesh };
+
+// A triangle mesh object's triangles (world space) and their hierarchy (rays/rt_mesh.hpp), built
+// once when the object is made and shared by every copy of the scene: a mesh of 10⁶ triangles
+// is one object whose rays cost about log n tests. Its triangles are numbered as in its input
+// (`source[k]` is triangle k's number there when some were left out as degenerate).
+struct TriangleMesh {
+    mesh::Mesh mesh;                   // vertices, unit normals (smooth) or none, (u, v) or none
+    std::vector<std::uint32_t> source;  // empty: triangle k is input triangle k
+    MeshBvh bvh;
+    std::uint32_t source_index(std::size_t k) const {
+        return source.empty() ? static_cast<std::uint32_t>(k) : source[k];
+    }
+    // The hierarchy follows from the triangles.
+    bool operator==(const TriangleMesh& o) const { return mesh == o.mesh && source == o.source; }
+};
+// Builds the hierarchy. Preconditions: finite vertices, valid indices, `normals` empty or unit
+// (one per vertex), `uv` empty or one per vertex.
+TriangleMesh make_triangle_mesh(mesh::Mesh m, std::vector<std::uint32_t> source = {});
 
 struct Object {
     ObjectKind kind = ObjectKind::Quadric;
@@ -113,6 +133,7 @@ struct Object {
     bool smooth = false;                   // Triangle: vertex normals given (smooth shading):
     glm::dvec3 n0{0.0}, n1{0.0}, n2{0.0};  // ... at p0, p1, p2 (any length > 0)
     CsgTree csg;                           // Csg: the tree (rays/rt_csg.hpp)
+    Shared<TriangleMesh> mesh;             // Mesh: its triangles and their hierarchy
     ObjectUv uv;                           // its texture parametrisation (rays/rt_texture.hpp)
     glm::dvec3 velocity{0.0};              // motion blur: moved by velocity × time
     bool operator==(const Object&) const = default;
@@ -155,7 +176,8 @@ struct Scene {
 // Limits, so that an input cannot make a run exhaust the machine; refused with a clear error.
 constexpr long long kMaxPixels = 4096LL * 4096;
 constexpr int kMaxDepth = 16;
-constexpr std::size_t kMaxObjects = 20000;
+constexpr std::size_t kMaxObjects = 20000;         // objects; and ray-object tests per ray
+constexpr std::size_t kMaxTriangles = 1u << 22;    // 4,194,304 triangles in all the meshes
 constexpr std::size_t kMaxLights = 64;
 constexpr double kMaxCoordinate = 1e12;  // |coordinates| and scene sizes stay below this
 constexpr double kMaxAttenuation = 1e6;  // 1/(c1 + c2 r + c3 r²) is capped here (a light at r = 0)
@@ -181,16 +203,19 @@ Distribution distribution(const Scene& s);
 // Whether the scene uses any distribution. Without any, every ray is traced as before.
 inline bool distributed(const Scene& s) { return distribution(s).any(); }
 
-// The cost of a scene in ray-object tests, worst case: every ray of a primary ray's tree (a
-// full binary tree of depth max_depth when some materials mirror and others refract — or one
-// does both —, a chain when only one kind does) meets every object and casts a shadow ray to
-// every light. They bound the running time of brute force; the bounding volume hierarchy
-// (rt_bvh.hpp) usually tests far fewer objects, but not in the worst case (every object
-// overlapping every ray), so the limits still count every object. A CSG
-// object costs one test per leaf (object_tests).
+// The cost of a scene in ray-object tests: every ray of a primary ray's tree (a full binary
+// tree of depth max_depth when some materials mirror and others refract — or one does both —,
+// a chain when only one kind does) meets every object and casts a shadow ray to every light.
+// An object costs one test, a CSG object one per leaf (object_tests), and a mesh what its
+// hierarchy costs a ray that meets its box, expected (MeshBvh::cost: the surface area
+// heuristic's box and triangle tests, about 4 log₄ n for n triangles spread out, up to n when
+// they all overlap). The objects are counted one by one although the scene's own hierarchy
+// (rt_bvh.hpp) usually tests far fewer: every object can overlap every ray.
 double tree_rays(const Scene& s);      // rays in one primary ray's tree, at most (glossy
                                        // materials branch gloss_samples ways)
-double scene_tests(const Scene& s);    // ray-object tests per ray: objects, CSG leaves each
+double scene_tests(const Scene& s);    // ray-object tests per ray: objects, CSG leaves each,
+                                       // meshes their hierarchy's cost
+std::size_t scene_triangles(const Scene& s);  // triangles in all the meshes
 double pixel_work(const Scene& s);     // samples × tree_rays × (1 + shadow rays) × scene_tests
                                        // (+ samples² for Poisson dart throwing)
 constexpr double kMaxPixelWork = 1e7;  // one pixel (one step): well under a second
@@ -215,6 +240,7 @@ struct PreparedObject {
     bool smooth = false;                   // a triangle with vertex normals ...
     glm::dvec3 n0{0.0}, n1{0.0}, n2{0.0};  // ... unit, at p0, p1, p2
     Shared<PreparedCsg> csg;               // a CSG object's tree
+    Shared<TriangleMesh> mesh;             // a mesh object's triangles (the Object's, shared)
     glm::dvec3 velocity{0.0};              // motion blur (rays are moved by −velocity × time)
     bool moving = false;                   // velocity ≠ 0
     bool operator==(const PreparedObject&) const = default;
@@ -247,7 +273,8 @@ View make_view(const Camera& c);
 glm::dvec3 screen_point(const View& v, double x, double y);
 
 struct Hit {
-    int object = -1;  // -1: nothing hit
+    int object = -1;    // -1: nothing hit
+    int triangle = -1;  // a mesh object's triangle hit (its index in TriangleMesh::mesh)
     double t = 0;
     glm::dvec3 point{0.0};
     glm::dvec3 normal{0.0};  // unit, turned to face the ray (−d side)

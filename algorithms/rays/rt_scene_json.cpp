@@ -236,8 +236,8 @@ std::vector<glm::dvec3> mesh_normals_from(const Reader& o, std::size_t vertices)
 }
 
 // A mesh object: its triangles from "vertices" + "triangles" (+ "uv", "normals"), from
-// "generate" (rays/mesh_gen.hpp) or from an "obj" file, moved by an optional "transform";
-// one triangle object each.
+// "generate" (rays/mesh_gen.hpp) or from an "obj" file, moved by an optional "transform"; one
+// object holding them all with their hierarchy (TriangleMesh).
 void mesh_objects_from(const Reader& o, const Object& obj, Scene& s) {
     const int sources = int(o.has("vertices")) + int(o.has("generate")) + int(o.has("obj"));
     if (sources != 1)
@@ -246,9 +246,10 @@ void mesh_objects_from(const Reader& o, const Object& obj, Scene& s) {
     mesh::Mesh m;
     std::string source;  // the field the triangles come from, for errors
     auto check_count = [&](std::size_t n, const std::string& f) {
-        if (s.objects.size() + n > kMaxObjects)
-            throw InputError(f, "makes the scene " + std::to_string(s.objects.size() + n) +
-                                    " objects; the limit is " + std::to_string(kMaxObjects));
+        const std::size_t total = scene_triangles(s) + n;
+        if (total > kMaxTriangles)
+            throw InputError(f, "makes the scene's meshes " + std::to_string(total) +
+                                    " triangles; the limit is " + std::to_string(kMaxTriangles));
     };
     if (o.has("generate")) {
         for (const char* k : {"triangles", "uv", "normals"})
@@ -267,6 +268,7 @@ void mesh_objects_from(const Reader& o, const Object& obj, Scene& s) {
         m = mesh_json::read_obj(o.string("obj"), source);
         check_count(m.triangles.size(), source);
     } else {
+        source = o.field("vertices");
         m.vertices = o.points3("vertices");
         if (o.has("uv")) {
             m.uv = o.points2("uv");
@@ -313,29 +315,34 @@ void mesh_objects_from(const Reader& o, const Object& obj, Scene& s) {
         for (glm::dvec3& p : m.vertices) p = glm::dvec3(M * glm::dvec4(p, 1.0));
         for (glm::dvec3& n : m.normals) n = N * n;
     }
+    // Zero-area triangles: refused when listed by hand, left out when generated or read (a
+    // transform may squash a generated one flat too). The others keep their input numbers.
     const bool from_vertices = o.has("vertices");
-    const std::size_t before = s.objects.size();
+    std::vector<std::array<std::uint32_t, 3>> kept;
+    std::vector<std::uint32_t> numbers;
+    kept.reserve(m.triangles.size());
+    numbers.reserve(m.triangles.size());
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {
         const auto& ix = m.triangles[t];
-        Object tri = obj;
-        tri.kind = ObjectKind::Triangle;
-        tri.field = from_vertices ? element(o.field("triangles"), t) : source;
-        tri.name = obj.name + ".triangles[" + std::to_string(t) + "]";
-        tri.p0 = m.vertices[ix[0]], tri.p1 = m.vertices[ix[1]], tri.p2 = m.vertices[ix[2]];
-        // A transform may squash a generated triangle flat: it is left out, as a flat one is.
-        if (!from_vertices && mesh::degenerate(tri.p0, tri.p1, tri.p2)) continue;
-        if (!m.uv.empty()) {
-            tri.uv.has_uv = true;
-            tri.uv.uv = {m.uv[ix[0]], m.uv[ix[1]], m.uv[ix[2]]};
+        const glm::dvec3 p0 = m.vertices[ix[0]], p1 = m.vertices[ix[1]], p2 = m.vertices[ix[2]];
+        if (mesh::degenerate(p0, p1, p2)) {
+            if (from_vertices)
+                throw InputError(element(o.field("triangles"), t),
+                                 "is degenerate: its corners " + num(p0, 4) + ", " + num(p1, 4) +
+                                     ", " + num(p2, 4) + " are collinear or coincide (zero area)");
+            continue;
         }
-        if (!m.normals.empty()) {
-            tri.smooth = true;
-            tri.n0 = m.normals[ix[0]], tri.n1 = m.normals[ix[1]], tri.n2 = m.normals[ix[2]];
-        }
-        s.objects.push_back(std::move(tri));
+        kept.push_back(ix);
+        numbers.push_back(static_cast<std::uint32_t>(t));
     }
-    if (s.objects.size() == before)
+    if (kept.empty())
         throw InputError(source, "gives no triangle of nonzero area: every one is degenerate");
+    if (kept.size() == m.triangles.size()) numbers.clear();  // none left out: k is k
+    m.triangles = std::move(kept);
+    Object mo = obj;
+    mo.kind = ObjectKind::Mesh;
+    mo.mesh = Shared<TriangleMesh>(make_triangle_mesh(std::move(m), std::move(numbers)));
+    s.objects.push_back(std::move(mo));
 }
 
 int material_index(const Reader& r, const std::vector<Material>& materials) {
@@ -408,7 +415,7 @@ void objects_from(const Reader& r, const std::vector<Material>& materials, Scene
         }
         if (s.objects.size() > kMaxObjects)
             throw InputError("objects", "has more than " + std::to_string(kMaxObjects) +
-                                            " objects (triangles counted one by one)");
+                                            " objects (a mesh is one, however many triangles it has)");
     }
 }
 
@@ -557,6 +564,24 @@ json scene_to_json(const Scene& s) {
             case ObjectKind::Csg:
                 j = json{{"type", "csg"}, {"tree", csg_json::tree_json(o.csg)}};
                 break;
+            case ObjectKind::Mesh: {  // listed vertex by vertex (a generated one too)
+                const mesh::Mesh& m = o.mesh->mesh;
+                json v = json::array(), t = json::array();
+                for (const glm::dvec3& p : m.vertices) v.push_back(nice_point(p));
+                for (const auto& ix : m.triangles) t.push_back({ix[0], ix[1], ix[2]});
+                j = json{{"type", "mesh"}, {"vertices", std::move(v)}, {"triangles", std::move(t)}};
+                if (!m.normals.empty()) {
+                    json n = json::array();
+                    for (const glm::dvec3& p : m.normals) n.push_back(nice_point(p));
+                    j["normals"] = std::move(n);
+                }
+                if (!m.uv.empty()) {
+                    json uv = json::array();
+                    for (const glm::dvec2& p : m.uv) uv.push_back(nice_point(p));
+                    j["uv"] = std::move(uv);
+                }
+                break;
+            }
         }
         j["name"] = o.name;
         j["material"] = s.materials[o.material].name;

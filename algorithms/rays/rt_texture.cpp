@@ -35,9 +35,25 @@ UvSurface uv_surface(const Object& o) {
             break;
         case ObjectKind::Csg:
             break;  // no parametrisation: image textures and bumps are refused on CSG objects
+        case ObjectKind::Mesh:
+            break;  // one per triangle (mesh_uv_surface), made at the hit
     }
     return u;
 }
+
+namespace {
+
+// A mesh triangle's parametrisation, as a triangle object with its corners and (u, v) has.
+UvSurface mesh_uv_surface(const TriangleMesh& tm, std::size_t k) {
+    UvSurface u;
+    u.kind = UvKind::Triangle;
+    const auto& t = tm.mesh.triangles[k];
+    u.p = {tm.mesh.vertices[t[0]], tm.mesh.vertices[t[1]], tm.mesh.vertices[t[2]]};
+    if (!tm.mesh.uv.empty()) u.uv = {tm.mesh.uv[t[0]], tm.mesh.uv[t[1]], tm.mesh.uv[t[2]]};
+    return u;
+}
+
+}  // namespace
 
 // ---- [validate and prepare] -----------------------------------------------------------------
 
@@ -78,6 +94,13 @@ void validate_textures(const Scene& s) {
                                  "(its surface is pieced from its leaves): use a solid_texture, "
                                  "or a material without texture and bump");
         if (o.kind == ObjectKind::Quadric || !(t.has_texture || t.has_bump)) continue;
+        if (o.kind == ObjectKind::Mesh) {
+            for (std::size_t k = 0; k < o.mesh->mesh.triangles.size(); ++k)
+                validate_uv_surface(mesh_uv_surface(*o.mesh, k),
+                                    o.field + ".triangles[" +
+                                        std::to_string(o.mesh->source_index(k)) + "]");
+            continue;
+        }
         std::string f = o.field;  // a triangle's field is "objects[2].vertices"
         const std::string tail = ".vertices";
         if (f.size() > tail.size() && f.compare(f.size() - tail.size(), tail.size(), tail) == 0)
@@ -136,7 +159,11 @@ Surface surface_at(const Scene& s, const Prepared& p, const Hit& h, dvec3 origin
     const MaterialTextures& t = m.tex;
     if (!t.any()) return sf;
     (void)d;
-    const PreparedUv& uv = p.textures.surfaces[h.object];
+    PreparedUv triangle_uv;  // a mesh's: its hit triangle's, made here
+    if (obj.kind == ObjectKind::Mesh)
+        triangle_uv = prepare_uv(mesh_uv_surface(*obj.mesh, static_cast<std::size_t>(h.triangle)));
+    const PreparedUv& uv =
+        obj.kind == ObjectKind::Mesh ? triangle_uv : p.textures.surfaces[h.object];
     const bool needs_frame = t.has_texture || t.has_bump;
     UvFrame frame;
     if (needs_frame) frame = uv_frame(uv, h.point);

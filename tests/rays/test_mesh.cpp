@@ -360,7 +360,7 @@ TEST_CASE("generated patch: a collapsed corner keeps unit normals, drops flat tr
 
 // ---- the scene file ---------------------------------------------------------------------------
 
-TEST_CASE("scene file: generated meshes become smooth triangles, and errors name the field", "[mesh]") {
+TEST_CASE("scene file: a generated mesh is one smooth object, and errors name the field", "[mesh]") {
     const auto s = cg::test::scene_of(scene_with(
         R"({"type": "mesh", "material": "m", "generate": {"shape": "sphere", "radius": 1, "segments": 8}},
            {"type": "mesh", "material": "m", "generate": {"shape": "terrain", "size": [4, 4], "resolution": 3, "seed": 2},
@@ -368,14 +368,19 @@ TEST_CASE("scene file: generated meshes become smooth triangles, and errors name
            {"type": "mesh", "material": "m", "generate": {"shape": "patch", "segments": 2,
             "control_points": [[[0,0,0],[1,0,0],[2,0,0],[3,0,0]], [[0,1,0],[1,1,1],[2,1,1],[3,1,0]],
                                [[0,2,0],[1,2,1],[2,2,1],[3,2,0]], [[0,3,0],[1,3,0],[2,3,0],[3,3,0]]]}})"));
-    REQUIRE(s.objects.size() == 48 + 18 + 8);
-    for (const rt::Object& o : s.objects) {
-        CHECK(o.kind == rt::ObjectKind::Triangle);
-        CHECK(o.smooth);
-        CHECK(o.uv.has_uv);
+    REQUIRE(s.objects.size() == 3);
+    const std::size_t counts[3] = {48, 18, 8};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const rt::Object& o = s.objects[k];
+        CHECK(o.kind == rt::ObjectKind::Mesh);
+        CHECK(o.mesh->mesh.triangles.size() == counts[k]);
+        CHECK(o.mesh->mesh.normals.size() == o.mesh->mesh.vertices.size());  // smooth
+        CHECK(o.mesh->mesh.uv.size() == o.mesh->mesh.vertices.size());
+        CHECK(o.mesh->bvh.triangles.size() == counts[k]);  // its hierarchy, built once
     }
-    CHECK(s.objects[48].field == "objects[1].generate");
-    CHECK(s.objects[48].p0.y < -1);  // moved down by the transform
+    CHECK(s.objects[1].field == "objects[1]");
+    for (const glm::dvec3& v : s.objects[1].mesh->mesh.vertices)
+        CHECK(v.y <= -1);  // moved down by the transform (the highest point reaches −1)
     // Deterministic: read twice, the same scene.
     CHECK(
         cg::test::scene_of(scene_with(
@@ -403,8 +408,9 @@ TEST_CASE("scene file: generated meshes become smooth triangles, and errors name
         err(R"({"type": "mesh", "material": "m", "generate": {"shape": "terrain", "resolution": 0}})"),
         Catch::StartsWith("objects[0].generate.resolution: must be between 1 and 2048"));
     CHECK_THAT(
-        err(R"({"type": "mesh", "material": "m", "generate": {"shape": "terrain", "resolution": 708}})"),
-        Catch::StartsWith("objects[0].generate: makes the scene 1002528 objects; the limit is"));
+        err(R"({"type": "mesh", "material": "m", "generate": {"shape": "terrain", "resolution": 1500}})"),
+        Catch::StartsWith("objects[0].generate: makes the scene's meshes 4500000 triangles; the "
+                          "limit is 4194304"));
     CHECK_THAT(
         err(R"({"type": "mesh", "material": "m", "generate": {"shape": "patch", "control_points": [[[0,0,0]]]}})"),
         Catch::StartsWith("objects[0].generate.control_points: must be 4 rows of 4"));
@@ -459,12 +465,14 @@ TEST_CASE("OBJ: a hand-written cube, quads triangulated, with its normals and (u
     cg::rebase_image_paths(j, std::string(CG_SOURCE_DIR) + "/tests/data");
     rt::Scene s = rt::scene_from_json(j);
     rt::validate(s);
-    REQUIRE(s.objects.size() == 12);
-    CHECK(s.objects[0].field == "objects[0].obj");
+    REQUIRE(s.objects.size() == 1);
+    CHECK(s.objects[0].mesh->mesh.triangles.size() == 12);
+    CHECK(s.objects[0].field == "objects[0]");
     // The cube of side 2 seen from z = 5: the centre ray meets its front face at z = 1.
     const rt::Prepared p = rt::prepare(s);
     const rt::Hit h = rt::nearest_hit(p, dvec3(0.1, 0.2, 5), dvec3(0, 0, -1));
-    REQUIRE(h.object >= 0);
+    REQUIRE(h.object == 0);
+    REQUIRE(h.triangle >= 0);
     CHECK(h.t == Approx(4));
     CHECK(glm::length(h.normal - dvec3(0, 0, 1)) < 1e-6);
 }

@@ -7,10 +7,13 @@
 // solve of E + t d = P0 + β e1 + γ e2 by Cramer's rule on the 3 × 3 determinants.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
 #include "rays/mesh_gen.hpp"
 #include "rays/rt_mesh.hpp"
+#include "rays/rt_scene.hpp"
 
 using namespace cg;
 using glm::dvec3;
@@ -181,7 +184,7 @@ TEST_CASE("mesh hierarchy: a flat terrain, rays at its grid's corners and edges"
     CHECK(hits > 9000);  // the rare miss: a point exactly on the rim, lost to rounding by both
 }
 
-TEST_CASE("mesh hierarchy: the same tree on one thread or two; generated meshes", "[rt_mesh]") {
+TEST_CASE("mesh hierarchy: the same tree on one thread or two, on generated meshes", "[rt_mesh]") {
     mesh::TerrainParams tp;
     tp.resolution = 96;
     mesh::Mesh m = mesh::terrain(tp);
@@ -248,4 +251,153 @@ TEST_CASE("mesh hierarchy: copies of one triangle and a sliver fan keep the dept
     REQUIRE(rt::mesh_nearest(single, {0.2, 0.2, 1}, {0, 0, -1}, 0, INFINITY, h));
     REQUIRE(h.t == 1);
     REQUIRE(h.beta == 0.2);
+}
+
+// ---- mesh objects in the ray tracer ------------------------------------------------------------
+
+namespace {
+
+rt::Scene base_scene() {
+    rt::Scene s;
+    s.camera.eye = {0.3, 2.5, 4};
+    s.camera.center = {0, 0, 0};
+    s.camera.width = 48, s.camera.height = 36;
+    s.settings.max_depth = 2;
+    rt::Material m;
+    m.name = "m";
+    m.kr = glm::dvec3(0.3);
+    s.materials.push_back(m);
+    rt::Light l;
+    l.position = {2, 4, 3};
+    s.lights.push_back(l);
+    return s;
+}
+
+// The scene with every mesh replaced by its triangles, one triangle object each (what a mesh
+// was before mesh objects existed).
+rt::Scene as_triangles(const rt::Scene& s) {
+    rt::Scene t = s;
+    t.objects.clear();
+    for (const rt::Object& o : s.objects) {
+        if (o.kind != rt::ObjectKind::Mesh) {
+            t.objects.push_back(o);
+            continue;
+        }
+        const mesh::Mesh& m = o.mesh->mesh;
+        for (const auto& ix : m.triangles) {
+            rt::Object tri = o;
+            tri.kind = rt::ObjectKind::Triangle;
+            tri.mesh = {};
+            tri.p0 = m.vertices[ix[0]], tri.p1 = m.vertices[ix[1]], tri.p2 = m.vertices[ix[2]];
+            if (!m.normals.empty()) {
+                tri.smooth = true;
+                tri.n0 = m.normals[ix[0]], tri.n1 = m.normals[ix[1]], tri.n2 = m.normals[ix[2]];
+            }
+            t.objects.push_back(tri);
+        }
+    }
+    return t;
+}
+
+rt::Object mesh_object(mesh::Mesh m, const std::string& name) {
+    rt::Object o;
+    o.kind = rt::ObjectKind::Mesh;
+    o.name = o.field = name;
+    o.mesh = cg::Shared<rt::TriangleMesh>(rt::make_triangle_mesh(std::move(m)));
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("mesh objects: the tracer's hits and blockers equal brute force over every triangle",
+          "[rt_mesh]") {
+    Gen g{std::mt19937_64(21)};
+    int hits = 0, mesh_hits = 0;
+    for (int scene = 0; scene < 6; ++scene) {
+        rt::Scene s = base_scene();
+        // Meshes (soups, a terrain, a sphere) between spheres and lone triangles; a lone
+        // triangle that duplicates a mesh's first triangle exactly (a tie in t across objects).
+        const mesh::Mesh soup1 = soup(g, 150, 1.0);
+        rt::Object ball;
+        ball.kind = rt::ObjectKind::Quadric;
+        ball.quadric.r = 0.3;
+        ball.quadric.world_from_model = glm::translate(glm::dmat4(1.0), g.point(1.0));
+        ball.name = ball.field = "ball";
+        s.objects.push_back(ball);
+        s.objects.push_back(mesh_object(soup1, "soup"));
+        rt::Object dup;
+        dup.kind = rt::ObjectKind::Triangle;
+        dup.name = dup.field = "dup";
+        dup.p0 = soup1.vertices[soup1.triangles[0][0]];
+        dup.p1 = soup1.vertices[soup1.triangles[0][1]];
+        dup.p2 = soup1.vertices[soup1.triangles[0][2]];
+        s.objects.push_back(dup);
+        mesh::TerrainParams tp;
+        tp.resolution = 12;
+        tp.size = {3, 3};
+        tp.center = {0, -0.8, 0};
+        tp.height = 0.3;
+        s.objects.push_back(mesh_object(mesh::terrain(tp), "terrain"));
+        mesh::SphereParams sp;
+        sp.center = g.point(0.8);
+        sp.radius = 0.4;
+        sp.segments = 12;
+        s.objects.push_back(mesh_object(mesh::sphere(sp), "globe"));
+        if (scene % 2) s.objects.push_back(mesh_object(soup(g, 60, 1.0), "soup2"));
+        rt::validate(s);
+        const rt::Prepared p = rt::prepare(s);
+        REQUIRE_FALSE(p.bvh.nodes.empty());
+        for (int r = 0; r < 10000; ++r) {
+            dvec3 o = g.point(2.5);
+            dvec3 target = g.point(1.0);
+            if (r % 10 == 0) target = dup.p0 + 0.3 * (dup.p1 - dup.p0) + 0.3 * (dup.p2 - dup.p0);
+            const dvec3 d = target - o;
+            const rt::Hit a = rt::nearest_hit(p, o, d), b = rt::nearest_hit_brute_force(p, o, d);
+            INFO("scene " << scene << " ray " << r);
+            REQUIRE(a.object == b.object);
+            REQUIRE(a.triangle == b.triangle);
+            REQUIRE(a.t == b.t);
+            REQUIRE(a.normal == b.normal);
+            if (a.object >= 0) ++hits;
+            if (a.object >= 0 && s.objects[a.object].kind == rt::ObjectKind::Mesh) ++mesh_hits;
+            if (r % 10 == 0 && a.object >= 0 && a.t == b.t) {
+                // At the duplicate: the soup (object 1) comes before "dup" (object 2).
+                if (s.objects[a.object].name == "dup") CHECK(false);
+            }
+            const double t_max = 0.2 + 0.8 * g.u();
+            REQUIRE(rt::first_blocker(p, o, d, 1e-9, t_max) ==
+                    rt::first_blocker_brute_force(p, o, d, 1e-9, t_max));
+            REQUIRE(rt::blocked(p, o, d, 1e-9, t_max) ==
+                    (rt::first_blocker_brute_force(p, o, d, 1e-9, t_max) >= 0));
+        }
+    }
+    CHECK(hits > 20000);
+    CHECK(mesh_hits > 10000);
+}
+
+TEST_CASE("mesh objects: images bit-identical to the same triangles as separate objects",
+          "[rt_mesh]") {
+    Gen g{std::mt19937_64(4)};
+    rt::Scene s = base_scene();
+    mesh::TerrainParams tp;
+    tp.resolution = 16;
+    tp.size = {4, 4};
+    tp.center = {0, -0.7, 0};
+    tp.height = 0.4;
+    s.objects.push_back(mesh_object(mesh::terrain(tp), "terrain"));  // smooth normals
+    mesh::SphereParams sp;
+    sp.center = {0.2, 0.1, 0};
+    sp.radius = 0.5;
+    s.objects.push_back(mesh_object(mesh::sphere(sp), "globe"));
+    s.objects.push_back(mesh_object(soup(g, 40, 1.0), "soup"));  // flat
+    rt::validate(s);
+    const rt::Scene t = as_triangles(s);
+    rt::validate(t);
+    REQUIRE(t.objects.size() > 500);
+    const rt::Image a = rt::render(s, 1), b = rt::render(t, 1);
+    CHECK(a.rays == b.rays);
+    int differ = 0;
+    for (std::size_t k = 0; k < a.rgba.size(); ++k) differ += a.rgba[k] != b.rgba[k];
+    CHECK(differ == 0);
+    CHECK(rt::render(s, 2) == a);  // and the same on two threads
 }

@@ -186,6 +186,8 @@ class ReferenceTracer {
             }
             case rt::ObjectKind::Csg:
                 break;  // the random reference scenes have no CSG objects (test_rt_csg.cpp)
+            case rt::ObjectKind::Mesh:
+                break;  // nor meshes (test_rt_mesh.cpp, test_rt_bvh.cpp)
         }
         return INFINITY;
     }
