@@ -579,12 +579,12 @@ struct Nearest {
 }  // namespace
 
 Hit nearest_hit(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
-    if (p.bvh.nodes.empty()) return nearest_hit_brute_force(p, origin, d, t_min, t_max, time);
     Nearest n{t_max};
     auto test = [&](int k) {
         n.test(p, k, origin, d, t_min, time);
         return false;
     };
+    // Without a tree every object is on the unbounded list (a mesh still uses its own).
     for (int k : p.bvh.unbounded) test(k);
     traverse(p.bvh, box_ray(origin, d), t_min, [&] { return n.best; }, test);
     if (n.object < 0) return Hit{};
@@ -621,7 +621,6 @@ Hit nearest_hit_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t_m
 
 int first_blocker(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max,
                   double time) {
-    if (p.bvh.nodes.empty()) return first_blocker_brute_force(p, origin, d, t_min, t_max, time);
     // The smallest index among the blockers (brute force's answer): the unbounded objects in
     // order, then every leaf the shadow ray's segment meets, testing only smaller indices.
     int first = -1;
@@ -649,11 +648,6 @@ int first_blocker_brute_force(const Prepared& p, dvec3 origin, dvec3 d, double t
 }
 
 bool blocked(const Prepared& p, dvec3 origin, dvec3 d, double t_min, double t_max, double time) {
-    if (p.bvh.nodes.empty()) {
-        for (const PreparedObject& o : p.objects)
-            if (object_blocks(o, origin, d, t_min, t_max, time)) return true;
-        return false;
-    }
     for (int k : p.bvh.unbounded)
         if (object_blocks(p.objects[k], origin, d, t_min, t_max, time)) return true;
     bool hit = false;

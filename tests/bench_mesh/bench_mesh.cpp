@@ -40,9 +40,12 @@ struct Setup {
     RTCScene scene = nullptr;
 };
 
+// Every generated mesh has smooth normals and (u, v): so does their union.
 void append(mesh::Mesh& to, const mesh::Mesh& m) {
     const auto base = static_cast<std::uint32_t>(to.vertices.size());
     to.vertices.insert(to.vertices.end(), m.vertices.begin(), m.vertices.end());
+    to.normals.insert(to.normals.end(), m.normals.begin(), m.normals.end());
+    to.uv.insert(to.uv.end(), m.uv.begin(), m.uv.end());
     for (auto t : m.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }
 
@@ -269,5 +272,44 @@ void BM_MeshShadow_Embree(benchmark::State& state) {
         benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_MeshShadow_Embree)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The whole tracer on the same scene: the mesh as one object, a point light, shadows, no
+// secondary rays (primary and shadow rays only), shading included. Arg: threads.
+void BM_MeshTracer(benchmark::State& state) {
+    const Setup& s = setup();
+    static const rt::Scene scene = [&] {
+        rt::Scene sc;
+        sc.camera.eye = {0, 12, 16};
+        sc.camera.center = {0, 0, -1};
+        sc.camera.fov_y_deg = 50;
+        sc.camera.width = 640, sc.camera.height = 480;
+        sc.settings.max_depth = 0;
+        sc.settings.shadows = true;
+        rt::Material m;
+        m.name = "m";
+        sc.materials.push_back(m);
+        rt::Light l;
+        l.position = s.light;
+        sc.lights.push_back(l);
+        rt::Object o;
+        o.kind = rt::ObjectKind::Mesh;
+        o.name = o.field = "objects[0]";
+        o.mesh = Shared<rt::TriangleMesh>(rt::make_triangle_mesh(s.mesh));
+        sc.objects.push_back(o);
+        rt::validate(sc);
+        return sc;
+    }();
+    rt::Image image;
+    for (auto _ : state) {
+        image = rt::render(scene, static_cast<int>(state.range(0)));
+        benchmark::DoNotOptimize(image.rgba.data());
+    }
+    state.counters["rays"] = static_cast<double>(image.rays.total());
+    state.counters["rays/s"] =
+        benchmark::Counter(static_cast<double>(image.rays.total()) *
+                               static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_MeshTracer)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
