@@ -134,7 +134,8 @@ struct RayTracer {
         Colour,
         Texture,
         AreaLight,
-        Glossy
+        Glossy,
+        Build
     };
 
     struct State {

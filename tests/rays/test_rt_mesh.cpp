@@ -12,6 +12,7 @@
 #include <random>
 
 #include "rays/mesh_gen.hpp"
+#include "rays/ray_tracer.hpp"
 #include "rays/rt_mesh.hpp"
 #include "rays/rt_scene.hpp"
 
@@ -400,4 +401,35 @@ TEST_CASE("mesh objects: images bit-identical to the same triangles as separate 
     for (std::size_t k = 0; k < a.rgba.size(); ++k) differ += a.rgba[k] != b.rgba[k];
     CHECK(differ == 0);
     CHECK(rt::render(s, 2) == a);  // and the same on two threads
+}
+
+TEST_CASE("mesh objects: the ray tracer shows the hierarchy's build as its first step",
+          "[rt_mesh]") {
+    rt::Scene s = base_scene();
+    mesh::TerrainParams tp;
+    tp.resolution = 64;
+    s.objects.push_back(mesh_object(mesh::terrain(tp), "terrain"));
+    cg::RayTracer::Input in;
+    in.scene = s;
+    in.granularity = cg::RayTracer::Granularity::RayTree;
+    in.pixel = {24, 18};
+    auto st = cg::RayTracer::start(in);
+    cg::StepInfo info;
+    cg::RayTracer::step(st, &info);
+    CHECK(info.event == "build");
+    CHECK(info.line == 16);
+    CHECK_THAT(info.narration,
+               Catch::Contains("Mesh terrain: its own hierarchy over 8192 triangles"));
+    cg::Scene pic;
+    cg::RayTracer::draw(st, pic);
+    CHECK(pic.segments3.size() >= 12 * 2);  // the mesh's box and its children's
+    // The next step is the primary ray, and the image is what the plain tracer makes.
+    cg::StepInfo next;
+    cg::RayTracer::step(st, &next);
+    CHECK(next.event == "primary");
+    while (!cg::RayTracer::done(st)) cg::RayTracer::step(st, nullptr);
+    rt::RayCounts counts;
+    const rt::Prepared p = rt::prepare(s);
+    CHECK(rt::to_rgba8(cg::RayTracer::result(st).color) ==
+          rt::to_rgba8(rt::pixel_color(s, p, 24, 18, counts)));
 }
