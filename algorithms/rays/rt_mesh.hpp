@@ -66,9 +66,11 @@ struct MeshBvh {
 // Preconditions: the vertices are finite and the indices valid. threads 0: both cores (2).
 MeshBvh build_mesh_bvh(const mesh::Mesh& m, int threads = 0);
 
-// Möller-Trumbore: E + t d = P0 + β e1 + γ e2 by Cramer's rule; +∞ when the ray misses, is
-// parallel to the plane (|det| ≤ 10⁻¹⁵ |e1| |d × e2|) or meets it at t ≤ t_min. The ray tracer's
-// triangle objects use the same test, so a mesh and its triangles give the same hits.
+// Möller-Trumbore: E + t d = P0 + β e1 + γ e2 by Cramer's rule, β = u/det, γ = v/det,
+// t = w/det; +∞ when the ray misses, is parallel to the plane (|det| ≤ 10⁻¹⁵ |e1| |d × e2|) or
+// meets it at t ≤ t_min. The ray tracer's triangle objects use the same test, so a mesh and its
+// triangles give the same hits. The inside tests compare u, v and u + v with det (by det's
+// sign) before anything is divided: most tests are misses, and a miss then costs no division.
 inline double triangle_t(glm::dvec3 p0, glm::dvec3 e1, glm::dvec3 e2, glm::dvec3 origin,
                          glm::dvec3 d, double t_min, double* beta_out = nullptr,
                          double* gamma_out = nullptr) {
@@ -79,17 +81,19 @@ inline double triangle_t(glm::dvec3 p0, glm::dvec3 e1, glm::dvec3 e2, glm::dvec3
     if (det * det <= 1e-30 * (e1.x * e1.x + e1.y * e1.y + e1.z * e1.z) *
                          (pv.x * pv.x + pv.y * pv.y + pv.z * pv.z))
         return kInf;
-    const double inv = 1 / det;
     const glm::dvec3 tv = origin - p0;
-    const double beta = (tv.x * pv.x + tv.y * pv.y + tv.z * pv.z) * inv;
-    if (!(beta >= 0 && beta <= 1)) return kInf;
+    const double u = tv.x * pv.x + tv.y * pv.y + tv.z * pv.z;
+    // 0 ≤ β ≤ 1: u between 0 and det, on det's side.
+    if (det > 0 ? !(u >= 0 && u <= det) : !(u <= 0 && u >= det)) return kInf;
     const glm::dvec3 qv(tv.y * e1.z - tv.z * e1.y, tv.z * e1.x - tv.x * e1.z,
                         tv.x * e1.y - tv.y * e1.x);
-    const double gamma = (d.x * qv.x + d.y * qv.y + d.z * qv.z) * inv;
-    if (!(gamma >= 0 && beta + gamma <= 1)) return kInf;
+    const double v = d.x * qv.x + d.y * qv.y + d.z * qv.z;
+    // γ ≥ 0 and β + γ ≤ 1.
+    if (det > 0 ? !(v >= 0 && u + v <= det) : !(v <= 0 && u + v >= det)) return kInf;
+    const double inv = 1 / det;
     const double t = (e2.x * qv.x + e2.y * qv.y + e2.z * qv.z) * inv;
     if (!(t > t_min)) return kInf;
-    if (beta_out) *beta_out = beta, *gamma_out = gamma;
+    if (beta_out) *beta_out = u * inv, *gamma_out = v * inv;
     return t;
 }
 
