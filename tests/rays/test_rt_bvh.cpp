@@ -10,6 +10,7 @@
 #include <random>
 
 #include "rays/rt_scene.hpp"
+#include "support/uniform.hpp"
 #include "rays/rt_scene_json.hpp"
 
 using namespace cg;
@@ -17,12 +18,7 @@ using glm::dvec3;
 
 namespace {
 
-struct Gen {
-    std::mt19937_64 rng;
-    double u() { return std::uniform_real_distribution<double>(0, 1)(rng); }
-    double c() { return std::uniform_real_distribution<double>(-1, 1)(rng); }
-    dvec3 point(double r) { return {r * c(), r * c(), r * c()}; }
-};
+using cg::test::Gen;
 
 glm::dmat4 random_affine(Gen& g, double spread) {
     glm::dmat4 m(1.0);

@@ -15,18 +15,14 @@
 #include "rays/ray_tracer.hpp"
 #include "rays/rt_mesh.hpp"
 #include "rays/rt_scene.hpp"
+#include "support/uniform.hpp"
 
 using namespace cg;
 using glm::dvec3;
 
 namespace {
 
-struct Gen {
-    std::mt19937_64 rng;
-    double u() { return std::uniform_real_distribution<double>(0, 1)(rng); }
-    double c() { return std::uniform_real_distribution<double>(-1, 1)(rng); }
-    dvec3 point(double r) { return {r * c(), r * c(), r * c()}; }
-};
+using cg::test::Gen;
 
 struct Brute {
     double t = INFINITY;
