@@ -41,6 +41,7 @@ bench: deps
 	@cmake --preset bench >/dev/null
 	@cmake --build --preset bench
 	@build-bench/bin/cgbench
+	@build-bench/bin/cgbench_mesh
 	@env -u DISPLAY build-bench/bin/cgbench_frames
 
 # Each fuzz target for FUZZ_SECONDS (default 300), growing build-sanitize/fuzz/corpus/.
