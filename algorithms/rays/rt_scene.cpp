@@ -753,33 +753,43 @@ LightTerm light_term(const Scene& s, const Light& light, const Material& m, dvec
 
 LightTerm light_term(const Scene& s, const Light& light, const Color& kd, const Material& m,
                      dvec3 point, dvec3 n, dvec3 v) {
-    LightTerm t;
+    // Computed into locals and assembled at the end: a default-initialised LightTerm filled in
+    // field by field was cleared with `rep stos` on every call (it runs twice per hit here).
+    dvec3 l;
+    double distance = Quadric::kInf, attenuation = 1;
     if (light.directional) {
-        t.l = -unit(light.direction);
+        l = -unit(light.direction);
     } else {
         const dvec3 to = light.position - point;
-        t.distance = glm::length(to);
-        t.l = t.distance > 0 ? to / t.distance : n;  // a light on the surface: straight above
+        distance = glm::length(to);
+        l = distance > 0 ? to / distance : n;  // a light on the surface: straight above
         const dvec3 c = light.attenuation;
         // Capped, so that a light touching the surface (r = 0 with c1 = 0) stays finite.
-        t.attenuation =
-            std::min(kMaxAttenuation, 1 / (c.x + c.y * t.distance + c.z * t.distance * t.distance));
+        attenuation =
+            std::min(kMaxAttenuation, 1 / (c.x + c.y * distance + c.z * distance * distance));
     }
-    t.n_dot_l = glm::dot(n, t.l);
+    const double n_dot_l = glm::dot(n, l);
+    double spec_dot;
     if (s.settings.model == Model::Phong) {
-        const dvec3 r = -t.l + 2 * t.n_dot_l * n;
-        t.spec_dot = glm::dot(r, v);
+        const dvec3 r = -l + 2 * n_dot_l * n;
+        spec_dot = glm::dot(r, v);
     } else {
-        const dvec3 h = unit(v + t.l);
-        t.spec_dot = glm::dot(h, n);
+        const dvec3 h = unit(v + l);
+        spec_dot = glm::dot(h, n);
     }
-    t.facing = t.n_dot_l > 0;
-    if (t.facing) {
-        const Color I = t.attenuation * light.intensity;
-        t.diffuse = I * kd * t.n_dot_l;
-        t.specular = I * m.ks * std::pow(std::max(t.spec_dot, 0.0), m.shininess);
+    const bool facing = n_dot_l > 0;
+    Color diffuse(0.0), specular(0.0);
+    if (facing) {
+        const Color I = attenuation * light.intensity;
+        diffuse = I * kd * n_dot_l;
+        // pow(+0, p) is +0 for every p > 0 (C's Annex F), so the highlight of a light reflected
+        // away from the viewer (r·v ≤ 0, clamped to +0) needs no call to pow; −0, NaN and p = 0
+        // still go through it, so the value is pow's in every case.
+        const double sd = std::max(spec_dot, 0.0);
+        const bool plus_zero = sd == 0 && !std::signbit(sd);
+        specular = I * m.ks * (plus_zero && m.shininess > 0 ? 0.0 : std::pow(sd, m.shininess));
     }
-    return t;
+    return LightTerm{l, distance, attenuation, n_dot_l, spec_dot, diffuse, specular, facing};
 }
 
 dvec3 offset_point(const Prepared& p, dvec3 point, dvec3 toward) {
