@@ -108,6 +108,8 @@ TriangleMesh make_triangle_mesh(mesh::Mesh m, std::vector<std::uint32_t> source)
     TriangleMesh t;
     for (dvec3& n : m.normals) n = unit(n);  // as a triangle object's are, in prepare
     t.bvh = build_mesh_bvh(m);
+    for (const auto& tri : m.triangles)
+        for (std::uint32_t i : tri) t.reach = std::max(t.reach, glm::length(m.vertices[i]));
     t.mesh = std::move(m);
     t.source = std::move(source);
     return t;
@@ -396,9 +398,7 @@ Prepared prepare(const Scene& s) {
                 break;
             case ObjectKind::Mesh:
                 q.mesh = o.mesh;
-                for (const auto& t : o.mesh->mesh.triangles)
-                    for (std::uint32_t i : t)
-                        scale = std::max(scale, glm::length(o.mesh->mesh.vertices[i]));
+                scale = std::max(scale, o.mesh->reach);
                 break;
         }
         p.objects.push_back(q);

@@ -112,10 +112,11 @@ struct TriangleMesh {
     mesh::Mesh mesh;                   // vertices, unit normals (smooth) or none, (u, v) or none
     std::vector<std::uint32_t> source;  // empty: triangle k is input triangle k
     MeshBvh bvh;
+    double reach = 0;  // the largest |corner| of its triangles (the scene's size, for ε)
     std::uint32_t source_index(std::size_t k) const {
         return source.empty() ? static_cast<std::uint32_t>(k) : source[k];
     }
-    // The hierarchy follows from the triangles.
+    // The hierarchy and the reach follow from the triangles.
     bool operator==(const TriangleMesh& o) const { return mesh == o.mesh && source == o.source; }
 };
 // Builds the hierarchy. Preconditions: finite vertices, valid indices, `normals` empty or unit
