@@ -440,11 +440,10 @@ double intersect_object(const PreparedObject& o, dvec3 origin, dvec3 d, double t
 
 namespace {
 
-// A triangle's shading normal at `point` (on it): the flat one, or, with vertex normals n0, n1,
-// n2 (unit), their interpolation at the point's barycentric coordinates.
-dvec3 triangle_normal(dvec3 p0, dvec3 e1, dvec3 e2, dvec3 flat, const dvec3* vertex_normals,
+// A smooth triangle's shading normal at `point` (on it): its unit vertex normals interpolated
+// at the point's barycentric coordinates (the flat normal where they cancel).
+dvec3 triangle_normal(dvec3 p0, dvec3 e1, dvec3 e2, dvec3 flat, const dvec3 vertex_normals[3],
                       dvec3 point, dvec3 d) {
-    if (!vertex_normals) return flat;
     // The hit's barycentric coordinates: point − p0 = β e1 + γ e2, by the areas of the
     // sub-triangles over N = e1 × e2 (Möller-Trumbore's β, γ for a point on the triangle).
     const dvec3 q = point - p0, N = glm::cross(e1, e2);
