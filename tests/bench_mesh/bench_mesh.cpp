@@ -140,6 +140,12 @@ Setup& setup() {
     return s;
 }
 
+// The "rays/s" counter: `rays` per iteration, over the wall time.
+void rays_per_second(benchmark::State& state, double rays) {
+    state.counters["rays/s"] = benchmark::Counter(rays * static_cast<double>(state.iterations()),
+                                                  benchmark::Counter::kIsRate);
+}
+
 RTCRayHit embree_ray(dvec3 o, dvec3 d, float tfar) {
     RTCRayHit rh{};
     rh.ray.org_x = static_cast<float>(o.x), rh.ray.org_y = static_cast<float>(o.y);
@@ -201,9 +207,7 @@ void BM_MeshPrimary_Ours(benchmark::State& state) {
     state.counters["boxes/ray"] = static_cast<double>(boxes) / rays;
     state.counters["triangles/ray"] = static_cast<double>(triangles) / rays;
     state.counters["hits"] = static_cast<double>(hits);
-    state.counters["rays/s"] = benchmark::Counter(
-        static_cast<double>(s.origins.size()) * static_cast<double>(state.iterations()),
-        benchmark::Counter::kIsRate);
+    rays_per_second(state, static_cast<double>(s.origins.size()));
 }
 BENCHMARK(BM_MeshPrimary_Ours)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -232,9 +236,7 @@ void BM_MeshPrimary_Embree(benchmark::State& state) {
     }
     state.counters["hits"] = static_cast<double>(hits);
     state.counters["differ"] = static_cast<double>(differ);
-    state.counters["rays/s"] = benchmark::Counter(
-        static_cast<double>(s.origins.size()) * static_cast<double>(state.iterations()),
-        benchmark::Counter::kIsRate);
+    rays_per_second(state, static_cast<double>(s.origins.size()));
 }
 BENCHMARK(BM_MeshPrimary_Embree)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -247,9 +249,7 @@ void BM_MeshShadow_Ours(benchmark::State& state) {
             blocked += rt::mesh_occluded(s.bvh, s.shadow_origins[r], s.shadow_directions[r], 0, 1);
     }
     state.counters["blocked"] = static_cast<double>(blocked);
-    state.counters["rays/s"] = benchmark::Counter(
-        static_cast<double>(s.shadow_origins.size()) * static_cast<double>(state.iterations()),
-        benchmark::Counter::kIsRate);
+    rays_per_second(state, static_cast<double>(s.shadow_origins.size()));
 }
 BENCHMARK(BM_MeshShadow_Ours)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -267,9 +267,7 @@ void BM_MeshShadow_Embree(benchmark::State& state) {
         }
     }
     state.counters["blocked"] = static_cast<double>(blocked);
-    state.counters["rays/s"] = benchmark::Counter(
-        static_cast<double>(s.shadow_origins.size()) * static_cast<double>(state.iterations()),
-        benchmark::Counter::kIsRate);
+    rays_per_second(state, static_cast<double>(s.shadow_origins.size()));
 }
 BENCHMARK(BM_MeshShadow_Embree)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -305,10 +303,7 @@ void BM_MeshTracer(benchmark::State& state) {
         benchmark::DoNotOptimize(image.rgba.data());
     }
     state.counters["rays"] = static_cast<double>(image.rays.total());
-    state.counters["rays/s"] =
-        benchmark::Counter(static_cast<double>(image.rays.total()) *
-                               static_cast<double>(state.iterations()),
-                           benchmark::Counter::kIsRate);
+    rays_per_second(state, static_cast<double>(image.rays.total()));
 }
 BENCHMARK(BM_MeshTracer)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
