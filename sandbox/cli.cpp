@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 
 #include "checkpoint.hpp"
+#include "cli_common.hpp"
+#include "cli_study.hpp"
 #include "accel/complexity.hpp"
 #include "hsr/complexity.hpp"
 #include "io/exam.hpp"
@@ -24,46 +26,7 @@ namespace cg {
 
 namespace {
 
-constexpr int kExitBadInput = 2;
-constexpr std::size_t kMaxSteps = 50'000'000;  // no algorithm here comes near; a hang guard
-
-// An error for the user: printed as "cgsandbox: <source>: <field>: <reason>".
-struct UserError {
-    std::string source;  // file name, "<stdin>", or empty
-    std::string message;
-};
-
-[[noreturn]] void fail(const std::string& source, const InputError& e) {
-    throw UserError{source, e.what()};
-}
-
-const Algorithm& find_algorithm(const Registry& registry, const std::string& id) {
-    if (const Algorithm* a = registry.find(id)) return *a;
-    throw UserError{"", "unknown algorithm \"" + id + "\"; `cgsandbox list` shows them"};
-}
-
-std::string source_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
-
-// The input from --input FILE (or "-"), or the algorithm's example when none is given.
-json load_input(const Algorithm& algorithm, const std::string& path) {
-    if (path.empty()) return algorithm.example();
-    try {
-        json j = parse_json(read_text_file(path));
-        if (path != "-") rebase_image_paths(j, folder_of(path));  // images beside the file
-        return j;
-    } catch (const InputError& e) {
-        fail(source_name(path), e);
-    }
-}
-
-std::unique_ptr<Run> create_run(const Algorithm& algorithm, const json& input,
-                                const std::string& source) {
-    try {
-        return algorithm.create(input);
-    } catch (const InputError& e) {
-        fail(source, e);
-    }
-}
+using namespace cli;
 
 int cmd_list(const Registry& registry) {
     for (const Algorithm& a : registry.all())
@@ -96,29 +59,6 @@ int cmd_run(const Registry& registry, const std::string& id, const std::string& 
     out += algorithm.result(*run).dump() + "\n";
     std::fwrite(out.data(), 1, out.size(), stdout);
     return 0;
-}
-
-// Writes text to --out FILE, or to stdout.
-void emit(const std::string& text, const std::string& out_path) {
-    if (out_path.empty()) {
-        std::fwrite(text.data(), 1, text.size(), stdout);
-        return;
-    }
-    std::FILE* f = std::fopen(out_path.c_str(), "wb");
-    if (!f || std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fclose(f) != 0)
-        throw UserError{out_path, "cannot write the file"};
-}
-
-LessonLibrary load_lesson_library(const Registry& registry) {
-    return load_lessons(default_lessons_dir(), registry);
-}
-
-// A preset of `lesson` by name; a wrong name lists the right ones.
-const LessonPreset& find_preset(const Lesson& lesson, const std::string& name) {
-    if (const LessonPreset* preset = lesson.preset(name)) return *preset;
-    std::string names;
-    for (const auto& p : lesson.presets) names += (names.empty() ? "\"" : ", \"") + p.name + "\"";
-    throw UserError{lesson.file, "no preset \"" + name + "\" (presets: " + names + ")"};
 }
 
 struct WorkedOptions {
@@ -449,6 +389,8 @@ int cli_main(int argc, char** argv) {
     render_scene->add_option("--threads", so.threads, "Threads (default: one per core)")
         ->check(CLI::Range(0, 256));
 
+    const cli::StudyCommands study(app);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -457,7 +399,7 @@ int cli_main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "cgsandbox: " << e.what() << " (see --help)\n";
-        return kExitBadInput;
+        return cli::kExitBadInput;
     }
 
     try {
@@ -469,6 +411,7 @@ int cli_main(int argc, char** argv) {
         if (*exam) return cmd_exam(registry, eo);
         if (*lessons) return cmd_lessons(registry, check_lessons);
         if (*render_scene) return cmd_render_scene(so);
+        if (auto code = study.run(registry)) return *code;
         if (*complexity) {
             if (topic == "accel")  // brute force run and compared on every ray up to n = 10⁴
                 std::cout << accel::complexity_table(
@@ -478,9 +421,9 @@ int cli_main(int argc, char** argv) {
             return 0;
         }
         return viewer::run_viewer(registry, std::nullopt);
-    } catch (const UserError& e) {
+    } catch (const cli::UserError& e) {
         std::cerr << "cgsandbox: " << (e.source.empty() ? "" : e.source + ": ") << e.message << "\n";
-        return kExitBadInput;
+        return cli::kExitBadInput;
     }
 }
 
