@@ -121,7 +121,7 @@ TEST_CASE("cli: bad input is one clear line naming file and field, exit 2", "[cl
 }
 
 TEST_CASE("cli: --help works on every command", "[cli]") {
-    for (const char* cmd : {"list", "example", "run", "render"}) {
+    for (const char* cmd : {"list", "example", "run", "render", "predict", "compare", "bug", "check"}) {
         auto r = cgsandbox({cmd, "--help"});
         CAPTURE(cmd);
         CHECK(r.exit_code == 0);
@@ -148,4 +148,143 @@ TEST_CASE("cli: the viewer without a display says so in one line", "[cli][gui]")
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK_THAT(r.err, Catch::Contains("display") && Catch::Contains("xvfb-run") &&
                           Catch::Contains("cgsandbox render"));
+}
+
+// --- the study modes (docs/study-modes.md) ---
+
+namespace {
+std::vector<json> json_lines(const std::string& text) {
+    std::vector<json> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) lines.push_back(json::parse(line));
+    return lines;
+}
+}  // namespace
+
+TEST_CASE("cli: predict prints one question per step, and grades a file of predictions", "[cli][study]") {
+    auto q = cgsandbox({"predict", "liang-barsky"});
+    REQUIRE(q.exit_code == 0);
+    for (int k = 1; k <= 6; ++k) CHECK_THAT(q.out, Catch::Contains("Step " + std::to_string(k) + ". "));
+    CHECK_THAT(q.out, !Catch::Contains("Step 7. "));
+    CHECK_THAT(q.out, Catch::Contains("entering: p_k < 0"));
+    auto qj = cgsandbox({"predict", "liang-barsky", "--format", "json"});
+    CHECK(json_lines(qj.out).size() == 6);
+
+    // Perfect predictions, made from the trace itself: every step right.
+    std::vector<json> trace = json_lines(cgsandbox({"run", "liang-barsky", "--trace"}).out);
+    trace.pop_back();  // the result
+    std::string answers;
+    for (const json& s : trace)
+        answers += json{{"step", s["index"]}, {"event", s["event"]}, {"variables", s["variables"]}}.dump() + "\n";
+    auto r = cgsandbox({"predict", "liang-barsky", "--answers", cg::test::write_temp("answers.jsonl", answers)});
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("score: 6 of 6 predicted steps right"));
+
+    // Step 3 predicted as entering: wrong, with the truth, listed to revisit.
+    std::string wrong;
+    for (const json& s : trace)
+        wrong += json{{"step", s["index"]}, {"event", s["index"] == 3 ? "entering" : s["event"]}, {"variables", s["variables"]}}.dump() + "\n";
+    r = cgsandbox({"predict", "liang-barsky", "--answers", cg::test::write_temp("wrong.jsonl", wrong)});
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("step 3: wrong — leaving"));
+    CHECK_THAT(r.out, Catch::Contains("(the step is leaving, not entering"));
+    CHECK_THAT(r.out, Catch::Contains("score: 5 of 6"));
+    CHECK_THAT(r.out, Catch::Contains("to revisit: steps 3"));
+    r = cgsandbox({"predict", "liang-barsky", "--format", "json", "--answers", cg::test::write_temp("wrong.jsonl", wrong)});
+    const json j = json::parse(r.out);
+    CHECK(j["score"]["right"] == 5);
+    CHECK(j["wrong"] == json::array({3}));
+
+    auto bad = cgsandbox({"predict", "liang-barsky", "--answers", cg::test::write_temp("bad.jsonl", "{\"step\": 1, \"event\": \"setup\"}\n{\"step\": \"two\"}\n")});
+    CHECK(bad.exit_code == 2);
+    CHECK_THAT(bad.err, Catch::Contains("bad.jsonl: prediction 2.step"));
+    auto both = cgsandbox({"predict", "liang-barsky", "--seed", "3", "--preset", "x"});
+    CHECK(both.exit_code == 2);
+    CHECK_THAT(both.err, Catch::Contains("give one of --input, --preset and --seed"));
+    CHECK(cgsandbox({"predict", "liang-barsky", "--seed", "3"}).exit_code == 0);
+}
+
+TEST_CASE("cli: check compares a student's trace: exit 0 agree, 1 differ, 2 unreadable", "[cli][study]") {
+    const std::string mine = cgsandbox({"run", "liang-barsky", "--trace"}).out;
+    auto r = cgsandbox({"check", "liang-barsky", "--trace", cg::test::write_temp("mine.jsonl", mine)});
+    CHECK(r.exit_code == 0);
+    CHECK(r.out == "all 6 steps agree with liang-barsky\n");
+
+    std::string off = mine;
+    off.replace(off.find("\"t_leave\":0.5"), 13, "\"t_leave\":0.6");
+    r = cgsandbox({"check", "liang-barsky", "--trace", cg::test::write_temp("off.jsonl", off)});
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.out, Catch::StartsWith("step 5 differs (4 steps before it agree):\n  t_leave: expected 0.5, got 0.6\n"));
+    CHECK_THAT(r.out, Catch::Contains("line 10:"));
+    r = cgsandbox({"check", "liang-barsky", "--format", "json", "--trace", cg::test::write_temp("off.jsonl", off)});
+    CHECK(r.exit_code == 1);
+    const json j = json::parse(r.out);
+    CHECK(j["first_difference"] == 5);
+    CHECK(j["expected_step"]["event"] == "leaving");
+
+    r = cgsandbox({"check", "liang-barsky", "--trace", cg::test::write_temp("broken.jsonl", "{\"event\": \"setup\"}\n[1]\n")});
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("broken.jsonl: line 2: each line must be a JSON object"));
+    r = cgsandbox({"check", "liang-barsky", "--trace", "/nonexistent/mine.jsonl"});
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("/nonexistent/mine.jsonl"));
+    r = cgsandbox({"check", "liang-barsky", "--input", "-", "--trace", cg::test::write_temp("mine.jsonl", mine)}, "{\"window\": 1}");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("<stdin>: window"));
+}
+
+TEST_CASE("cli: bug plants one mistake, deterministically, and grades the first wrong step", "[cli][study]") {
+    auto planted = cgsandbox({"bug", "liang-barsky", "--seed", "4", "--input", cg::test::write_temp("good.json", kGood)});
+    REQUIRE(planted.exit_code == 0);
+    CHECK(cgsandbox({"bug", "liang-barsky", "--seed", "4", "--input", cg::test::write_temp("good.json", kGood)}).out == planted.out);
+    std::vector<json> truth = json_lines(cgsandbox({"run", "liang-barsky", "--trace", "--input", cg::test::write_temp("good.json", kGood)}).out);
+    const std::vector<json> working = json_lines(planted.out);
+    REQUIRE(working.size() + 1 == truth.size());
+    long long first = 0;
+    for (std::size_t i = 0; i < working.size() && !first; ++i) {
+        CHECK(working[i]["narration"] == "");  // hidden: it would give the step away
+        if (working[i]["event"] != truth[i]["event"] || working[i]["variables"] != truth[i]["variables"])
+            first = static_cast<long long>(i) + 1;
+    }
+    REQUIRE(first > 0);
+    auto right = cgsandbox({"bug", "liang-barsky", "--seed", "4", "--input", cg::test::write_temp("good.json", kGood), "--answer", std::to_string(first)});
+    CHECK(right.exit_code == 0);
+    CHECK_THAT(right.out, Catch::StartsWith("Right: step " + std::to_string(first)));
+    auto wrong = cgsandbox({"bug", "liang-barsky", "--seed", "4", "--input", cg::test::write_temp("good.json", kGood), "--answer", first == 1 ? "2" : "1"});
+    CHECK(wrong.exit_code == 1);
+    CHECK_THAT(wrong.out, Catch::StartsWith("Wrong: "));
+    CHECK_THAT(wrong.out, Catch::Contains("The right step " + std::to_string(first) + ": "));
+    auto out_of_range = cgsandbox({"bug", "liang-barsky", "--seed", "4", "--answer", "99"});
+    CHECK(out_of_range.exit_code == 2);
+    CHECK_THAT(out_of_range.err, Catch::Contains("--answer must be a step from 1 to"));
+    CHECK(cgsandbox({"bug", "liang-barsky"}).exit_code == 2);  // --seed is required
+}
+
+TEST_CASE("cli: compare runs two sides on one input and says where they part", "[cli][study]") {
+    auto r = cgsandbox({"compare", "z-buffer", "warnock", "--input", "-"}, cgsandbox({"example", "warnock"}).out);
+    REQUIRE(r.exit_code == 0);
+    json j = json::parse(r.out);
+    CHECK(j["agree"] == true);
+    CHECK(j["costs"]["z-buffer"].contains("compares"));
+    CHECK(j["costs"]["warnock"].contains("areas"));
+
+    r = cgsandbox({"compare", "liang-barsky", "liang-barsky", "--input-b", "-"},
+                  R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 2], "p1": [4, 2]})");
+    REQUIRE(r.exit_code == 0);
+    j = json::parse(r.out);
+    CHECK(j["agree"] == false);
+    CHECK(j["first_step"]["step"] == 1);
+
+    r = cgsandbox({"compare", "phong-lighting@phong", "phong-lighting@blinn-phong"});
+    REQUIRE(r.exit_code == 0);
+    j = json::parse(r.out);
+    CHECK(j["agree"] == false);  // the highlight differs
+
+    r = cgsandbox({"compare", "z-buffer", "liang-barsky"});
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("compare needs two algorithms that share an input kind"));
+    r = cgsandbox({"compare", "liang-barsky@fast", "liang-barsky"});
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("no variant \"fast\""));
 }
