@@ -141,7 +141,7 @@ const Spec& Bvh::spec() {
                 {"leaf-no-gain", "", "event:split-sah",
                  "split though the SAH cost is not below a leaf"},
             },
-            .costs = {"counts"},
+            .costs = {"counts", "brute_force"},  // tests per ray beside brute force's
             .variants = {{"median", "/split", "\"median\""}, {"sah", "/split", "\"sah\""}},
         },
     };

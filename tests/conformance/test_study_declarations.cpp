@@ -3,7 +3,6 @@
 // event's steps report, a mistake shows somewhere, a variant's input runs, algorithms of one
 // input kind read each other's inputs and report the fields they are compared on.
 #include <catch2/catch.hpp>
-
 #include <map>
 #include <set>
 
@@ -34,7 +33,8 @@ std::vector<cg::study::Trace> traces_of(const cg::Algorithm& a) {
 }
 
 bool known_kind(const std::string& kind) {
-    static const std::set<std::string> plain{"negate", "keep", "transpose", "reverse", "off-by-one", "not"};
+    static const std::set<std::string> plain{"negate",  "keep",       "transpose",
+                                             "reverse", "off-by-one", "not"};
     static const std::set<std::string> with_argument{"swap", "copy", "other", "event"};
     const auto colon = kind.find(':');
     if (colon == std::string::npos) return plain.count(kind) > 0;
@@ -76,12 +76,15 @@ TEST_CASE("every algorithm declares predictable steps and plantable mistakes tha
             CHECK(cg::study::find_event(spec, m.event));
             CHECK(known_kind(m.kind));
             CHECK_FALSE(m.description.empty());
-            if (m.kind.rfind("event:", 0) == 0) CHECK(cg::study::find_event(spec, m.kind.substr(6)));
-            else CHECK(reported[m.event].count(m.var));
+            if (m.kind.rfind("event:", 0) == 0)
+                CHECK(cg::study::find_event(spec, m.kind.substr(6)));
+            else
+                CHECK(reported[m.event].count(m.var));
             // It shows on at least one of the algorithm's own inputs.
             bool shows = false;
             for (const auto& t : traces) {
-                for (const auto& site : cg::study::bug_sites(spec, t)) shows = shows || site.mistake == k;
+                for (const auto& site : cg::study::bug_sites(spec, t))
+                    shows = shows || site.mistake == k;
                 if (shows) break;
             }
             CHECK(shows);
@@ -122,8 +125,10 @@ TEST_CASE("variants run, input kinds are shared and readable both ways, costs ar
             const cg::json in = cg::study::side_input(side, a.example());
             CHECK_NOTHROW(cg::study::record(a, in));
         }
-        if (!spec.study.input_kind.empty()) kinds[spec.study.input_kind].push_back(&a);
-        else CHECK(spec.study.compare.empty());
+        if (!spec.study.input_kind.empty())
+            kinds[spec.study.input_kind].push_back(&a);
+        else
+            CHECK(spec.study.compare.empty());
     }
     for (const auto& [kind, members] : kinds) {
         INFO("input kind " << kind);
@@ -133,7 +138,8 @@ TEST_CASE("variants run, input kinds are shared and readable both ways, costs ar
                 INFO(a->spec->id << " on " << b->spec->id << "'s example");
                 CHECK(a->spec->study.compare == b->spec->study.compare);
                 const cg::study::Trace t = cg::study::record(*a, b->example());
-                for (const std::string& field : a->spec->study.compare) CHECK(t.result.contains(field));
+                for (const std::string& field : a->spec->study.compare)
+                    CHECK(t.result.contains(field));
             }
     }
 }

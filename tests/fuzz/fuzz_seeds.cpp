@@ -5,6 +5,8 @@
 //   <dir>/fuzz_checkpoint/       a checkpoint on each of those inputs, at a few steps
 //   <dir>/fuzz_timeline/         each algorithm with its example and two exam seeds, and a
 //                                command string that walks forward, back, jumps and ends
+//   <dir>/fuzz_study/            byte 0 = the algorithm's index, byte 1 = the mode (check,
+//                                predict, bug), then its example's trace as JSON Lines
 // The lessons' own files seed fuzz_lesson directly (lessons/).
 #include <filesystem>
 #include <fstream>
@@ -56,6 +58,17 @@ int main(int argc, char** argv) {
                       cg::checkpoint_to_json(c).dump());
             }
         }
+        std::string lines;
+        {
+            auto run = a.create(a.example());
+            for (std::size_t i = 1; !run->done() && i <= 200; ++i) {
+                cg::StepInfo info;
+                run->step(&info);
+                lines += cg::step_to_json(i, info).dump() + "\n";
+            }
+        }
+        for (char mode : {0, 1, 2})
+            write(out / "fuzz_study", id + "-" + std::to_string(int(mode)), std::string{char(k), mode} + lines);
         // forward ×3, back, jump 0x0105, range, to_end, back ×2, reset, forward
         const std::string walk = {0, 0, 0, 1, 2, 5, 1, 5, 7, 0, 3, 1, 1, 4, 0};
         for (unsigned char input : {0, 1, 2})
