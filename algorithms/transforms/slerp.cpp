@@ -165,7 +165,7 @@ const Spec& Slerp::spec() {
             {"nearly-equal", "sin ω is tiny: the normalised linear blend replaces 0/0"},
             {"blend", "q(u) as the weighted sum of q0 and q1"},
             {"rotate-point", "the x axis rotated by q(u) as q (0, P) q̄"},
-            {"matrix", "q(u) written as a 3×3 rotation matrix"},
+            {"matrix", "q(u) written as a 3×3 rotation matrix (or, to compare, the naive blend at u)"},
             {"sample", "one u on the paths: slerp vs lerp of matrices vs lerp of Euler angles"},
         },
         {},  // no sliders
@@ -176,6 +176,10 @@ const Spec& Slerp::spec() {
                 {"dot", "flipped", "not", "got the shorter-arc test backwards when negating q1"},
                 {"matrix", "M", "transpose", "wrote the matrix of conj(q): the inverse rotation"},
             },
+            // Slerp against lerping the matrices or the Euler angles: the orientation at u.
+            .variants = {{"slerp", "/method", "\"slerp\""},
+                         {"matrix-lerp", "/method", "\"matrix-lerp\""},
+                         {"euler-lerp", "/method", "\"euler-lerp\""}},
         },
     };
     return spec;
@@ -198,6 +202,21 @@ Slerp::State Slerp::start(const Input& in) {
     State s;
     s.in = in;
     return s;
+}
+
+// The orientation at u as a matrix, by the input's method: slerp's q, or a naive blend of the
+// keys (matrices entry by entry, or Euler angles xyz), as the sampled paths make them.
+dmat3 in_between(const Slerp::Input& in, const dquat& q, const dquat& q0, const dquat& q1) {
+    switch (in.method) {
+        case Slerp::Method::MatrixLerp:
+            return (1 - in.u) * Slerp::to_matrix(q0) + in.u * Slerp::to_matrix(q1);
+        case Slerp::Method::EulerLerp:
+            return rot::euler_matrix("xyz", (1 - in.u) * rot::euler_xyz_of(Slerp::to_matrix(q0)) +
+                                                in.u * rot::euler_xyz_of(Slerp::to_matrix(q1)));
+        case Slerp::Method::Slerp:
+            break;
+    }
+    return Slerp::to_matrix(q);
 }
 
 // ---- [advance] ------------------------------------------------------------------------------
@@ -242,7 +261,7 @@ void Slerp::advance(State& s) {
             s.phase = Phase::Matrix;
             return;
         case Phase::Matrix:
-            s.matrix = to_matrix(s.q);
+            s.matrix = in_between(s.in, s.q, s.q0, s.q1);
             s.phase = Phase::Sample;
             return;
         case Phase::Sample: {  // One u on the three paths
@@ -365,6 +384,20 @@ void narrate_rotate(const State& s, StepInfo& info) {
 void narrate_matrix(const State& s, StepInfo& info) {
     info.event = "matrix";
     info.line = kLineMatrix;
+    if (s.in.method != Slerp::Method::Slerp) {
+        const bool by_matrix = s.in.method == Slerp::Method::MatrixLerp;
+        const double det = glm::determinant(s.matrix);
+        info.narration =
+            std::string(by_matrix ? "Lerping the two matrices entry by entry instead, (1 − u) M0 + u M1 = "
+                                  : "Lerping the two sets of Euler angles (x, y, z rolls) instead gives ") +
+            rot::matrix_text(s.matrix) + (by_matrix ? ": its determinant is " + num(det, 4) +
+                                                          (std::fabs(det - 1) > 1e-9 ? ", so it is no rotation" : "")
+                                                    : ", a rotation, but not slerp's") +
+            " (slerp's q(u) would give " + rot::matrix_text(Slerp::to_matrix(s.q)) + ").";
+        info.math = std::string(by_matrix ? "M = (1 - u) M_0 + u M_1 = " : "M = R_{xyz}((1 - u) e_0 + u e_1) = ") +
+                    rot::matrix_tex(s.matrix);
+        return;
+    }
     info.narration =
         "As a matrix, q(u) = " + rot::matrix_text(s.matrix) + " (its first column is P′ above).";
     info.math =
@@ -474,7 +507,7 @@ Slerp::Result Slerp::result(const State& s) {
     r.fallback = w.fallback;
     r.omega_deg = rot::deg(w.omega);
     r.q = blend(q0, q1, w);
-    r.matrix = to_matrix(r.q);
+    r.matrix = in_between(in, r.q, q0, q1);
     return r;
 }
 

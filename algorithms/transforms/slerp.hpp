@@ -43,16 +43,22 @@ struct Slerp {
     static constexpr double kFallbackSin = 1e-6;  // below this sin ω: normalised linear blend
     static constexpr int kSamples = 9;            // u = 0, 1/8, …, 1 for the paths
 
+    // How the in-between orientation at u is made: slerp, or for comparison one of the naive
+    // blends (the same as the sampled paths): the two matrices lerped entry by entry (no
+    // rotation in between), or the two sets of Euler angles (order xyz) lerped.
+    enum class Method : std::uint8_t { Slerp, MatrixLerp, EulerLerp };
+
     struct Input {
         glm::dquat q0{1, 0, 0, 0};  // [w, x, y, z], any length ≠ 0
         glm::dquat q1{1, 0, 0, 0};
         double u = 0.5;  // in [0, 1]
+        Method method = Method::Slerp;
         bool operator==(const Input&) const = default;
     };
     struct Result {
         glm::dquat q{1, 0, 0, 0};  // the unit quaternion at u
         double omega_deg = 0;      // ω after the flip, [0, 90]
-        glm::dmat3 matrix{1.0};    // q as a rotation matrix
+        glm::dmat3 matrix{1.0};    // q as a rotation matrix (with another method: its blend at u)
         bool flipped = false;      // q1 was negated (q0 · q1 < 0)
         bool fallback = false;     // normalised linear blend (sin ω tiny)
         bool operator==(const Result&) const = default;

@@ -121,7 +121,7 @@ TEST_CASE("variants run, input kinds are shared and readable both ways, costs ar
         for (const cg::Variant& v : spec.study.variants) {
             INFO("variant " << v.name);
             const cg::study::Side side = cg::study::parse_side(registry(), spec.id + "@" + v.name);
-            CHECK(a.example().contains(cg::json::json_pointer(v.field)));
+            // (A misspelt field is refused by the strict reader below.)
             const cg::json in = cg::study::side_input(side, a.example());
             CHECK_NOTHROW(cg::study::record(a, in));
         }

@@ -5,6 +5,7 @@
 // determinism and the picture (slerp on the sphere, the matrix blend inside it).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
 
@@ -198,6 +199,50 @@ TEST_CASE("slerp: 10,000 random pairs agree with glm::slerp and the closed form"
     }
     CHECK(flips > 4000);
     CHECK(fallbacks >= 3000);
+}
+
+TEST_CASE("slerp: the naive methods' in-between matrices agree with GLM's, slerp's q unchanged",
+          "[transforms][slerp]") {
+    double smallest_det = 1;
+    for (int trial = 0; trial < 2000; ++trial) {
+        cg::Rng rng(1000 + trial);
+        Slerp::Input in{random_quat(rng), random_quat(rng), rng.uniform(0, 1)};
+        const dquat q0 = glm::normalize(in.q0), q1 = glm::normalize(in.q1);
+        const dmat3 m0 = glm::mat3_cast(q0), m1 = glm::mat3_cast(q1);
+        const auto slerped = Slerp::interpolate(in);
+
+        in.method = Slerp::Method::MatrixLerp;
+        auto r = cg::run_to_end<Slerp>(Slerp::start(in));
+        REQUIRE(Slerp::interpolate(in) == r);
+        REQUIRE(mdiff(r.matrix, (1 - in.u) * m0 + in.u * m1) <= 1e-12);
+        REQUIRE(r.q == slerped.q);
+        smallest_det = std::min(smallest_det, glm::determinant(r.matrix));
+
+        in.method = Slerp::Method::EulerLerp;
+        r = cg::run_to_end<Slerp>(Slerp::start(in));
+        REQUIRE(Slerp::interpolate(in) == r);
+        // R = R_z(θ3) R_y(θ2) R_x(θ1) of the lerped angles, composed by GLM.
+        const dvec3 e = (1 - in.u) * cg::rot::euler_xyz_of(m0) + in.u * cg::rot::euler_xyz_of(m1);
+        const glm::dmat4 R = glm::rotate(glm::dmat4(1), glm::radians(e.z), dvec3(0, 0, 1)) *
+                             glm::rotate(glm::dmat4(1), glm::radians(e.y), dvec3(0, 1, 0)) *
+                             glm::rotate(glm::dmat4(1), glm::radians(e.x), dvec3(1, 0, 0));
+        REQUIRE(mdiff(r.matrix, dmat3(R)) <= 1e-12);
+        REQUIRE(std::fabs(glm::determinant(r.matrix) - 1) <= 1e-12);
+    }
+    CHECK(smallest_det < 0.5);  // the matrix blend shrinks: no rotation in between
+    // The method is read, and named on error.
+    const cg::Algorithm& a = *cg::builtin_registry().find("slerp");
+    cg::json in = a.example();
+    in["method"] = "nlerp";
+    CHECK_THROWS_WITH(a.create(in), Catch::Contains("method") && Catch::Contains("euler-lerp"));
+    in["method"] = "euler-lerp";
+    auto run = a.create(in);
+    while (!run->done()) run->step(nullptr);
+    CHECK(a.result(*run)["matrix"] != a.result(*[&] {
+        auto plain = a.create(a.example());
+        while (!plain->done()) plain->step(nullptr);
+        return plain;
+    }())["matrix"]);
 }
 
 TEST_CASE("slerp: Euler angles read back from a matrix rebuild it, also at gimbal lock",
