@@ -472,7 +472,7 @@ TEST_CASE("compare two algorithms of one input kind on their shared fields, cost
     CHECK(d.differences[0].b == 7);
 }
 
-TEST_CASE("sides: ID and ID@VARIANT; a variant sets one input field", "[study][compare]") {
+TEST_CASE("sides: ID and ID@VARIANT, a variant setting one input field", "[study][compare]") {
     CHECK_THROWS_WITH(parse_side(registry(), "no-such"),
                       Catch::Contains("unknown algorithm \"no-such\""));
     CHECK_THROWS_WITH(parse_side(registry(), "liang-barsky@fast"),
