@@ -123,6 +123,27 @@ const Spec& Bvh::spec() {
             {"leaf-hit", "a leaf's box is hit: one of its primitives is the closest hit so far"},
             {"result", "the stack is empty: the closest hit and the counts against brute force"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"split-median", {"k"}},
+                {"split-sah", {"k"}},
+                {"push-children", {"t_enter"}},
+                {"leaf-hit", {"t_best"}},
+                {"box-miss", {}},
+                {"box-pruned", {}},
+            },
+            .mistakes = {
+                {"box-pruned", "", "event:push-children",
+                 "opened a box that starts beyond the best hit"},
+                {"push-children", "stack", "reverse",
+                 "pushed the near child first, so far pops first"},
+                {"leaf-no-gain", "", "event:split-sah",
+                 "split though the SAH cost is not below a leaf"},
+            },
+            .costs = {"counts/box_tests", "counts/primitive_tests"},
+            .variants = {{"median", "/split", "\"median\""}, {"sah", "/split", "\"sah\""}},
+        },
     };
     return spec;
 }

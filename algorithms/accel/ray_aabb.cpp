@@ -94,6 +94,19 @@ const Spec& RayAabb::spec() {
             {"miss-disjoint", "t_min > t_max: no t is in every slab (the early-out)"},
             {"miss-behind", "t_max < 0: the line meets the box behind the origin only"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"slab", {"t_near", "t_far"}},
+                {"slab-swapped", {"t_near", "t_far"}},
+                {"hit", {"t_hit"}},
+            },
+            .mistakes = {
+                {"slab", "t_min", "other:t_near", "updated t_min with min instead of max"},
+                {"slab", "t_max", "other:t_far", "updated t_max with max instead of min"},
+                {"hit", "t_hit", "other:t_max", "took the exit t_max as the hit"},
+            },
+        },
     };
     return spec;
 }

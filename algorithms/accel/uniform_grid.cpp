@@ -143,6 +143,21 @@ const Spec& UniformGrid::spec() {
             {"hit", "the nearest hit lies in this cell (t ≤ t_exit): final, the walk stops"},
             {"exit", "the walk leaves the grid with no hit: the ray misses every primitive"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"enter", {"cell"}},
+                {"empty-cell", {"t_exit"}},
+                {"hit", {"t_nearest"}},
+                {"hit-beyond-exit", {"t_nearest"}},
+            },
+            .mistakes = {
+                {"hit-beyond-exit", "", "event:hit",
+                 "accepted a hit beyond the cell without checking"},
+                {"empty-cell", "t_max_y", "keep", "stepped a cell but forgot to advance t_max"},
+            },
+            .costs = {"counts/cells_visited", "counts/primitive_tests"},
+        },
     };
     return spec;
 }

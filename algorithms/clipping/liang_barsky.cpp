@@ -113,6 +113,17 @@ const Spec& LiangBarsky::spec() {
             {"reject", "nothing of the segment is inside the window"},
             {"accept", "the visible part is P(t_enter) to P(t_leave)"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"entering", {"r_k", "t_enter"}}, {"leaving", {"r_k", "t_leave"}}},
+            .mistakes = {
+                {"entering", "p_k", "negate",
+                 "flipped the sign of p_k: took p = +dx for the left edge"},
+                {"entering", "t_enter", "other:r_k", "updated t_enter with min instead of max"},
+                {"leaving", "t_leave", "other:r_k", "updated t_leave with max instead of min"},
+                {"leaving", "", "event:entering", "read p_k > 0 as entering"},
+            },
+        },
     };
     return spec;
 }

@@ -212,6 +212,23 @@ const Spec& SutherlandHodgman::spec() {
             {"empty", "the output list came out empty: the polygon lies outside the window"},
             {"done", "all window edges done: the list is the clipped polygon"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"in-in", {}},
+                {"in-out", {"t", "I"}},
+                {"out-in", {"t", "I"}},
+                {"out-out", {}},
+            },
+            .mistakes = {
+                {"in-in", "side_P", "negate", "took the edge's inside on the wrong side"},
+                {"in-out", "I", "copy:P", "going out, emitted P instead of the crossing point"},
+                {"out-in", "", "event:in-out",
+                 "coming in, emitted only the crossing point and lost P"},
+                {"in-out", "", "event:out-out",
+                 "missed the crossing and emitted nothing on the way out"},
+            },
+        },
     };
     return spec;
 }

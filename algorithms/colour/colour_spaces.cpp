@@ -305,6 +305,22 @@ const Spec& ColourSpaces::spec() {
             {"saturation", "V (or L) and the saturation S"},
             {"result", "the colour converted"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"max-min", {"C"}},
+                {"hue", {"H"}},
+                {"saturation", {"S"}},
+                {"sector", {"X"}},
+                {"add-m", {"RGB"}},
+            },
+            .mistakes = {
+                {"saturation", "S", "copy:C", "forgot to divide the chroma by V"},
+                {"saturation", "V", "other:min",
+                 "took V as the smallest component, not the largest"},
+                {"grey", "", "event:hue", "worked out a hue for a grey, dividing by C = 0"},
+            },
+        },
     };
     return spec;
 }

@@ -89,6 +89,15 @@ const Spec& ArcLength::spec() {
             {"length", "the table's total length, against the true arc length"},
             {"query", "a distance turned into a parameter by interpolating in the table"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"sample", {"s_j"}}, {"length", {"L"}}, {"query", {"j", "u"}}},
+            .mistakes = {
+                {"sample", "s_j", "copy:chord", "stored each chord instead of the running sum"},
+                {"query", "u", "copy:s / L", "took u = s / L, as if the speed were uniform"},
+                {"query", "j", "off-by-one", "interpolated in the next interval of the table"},
+            },
+        },
     };
     return spec;
 }

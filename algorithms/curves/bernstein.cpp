@@ -95,6 +95,13 @@ const Spec& Bernstein::spec() {
             {"affine", "mapping the control points maps the curve: T(P(t)) = Σ B_i T(P_i)"},
         },
         {{"/t", "t", 0, 1}},
+        {
+            .predict = {{"basis", {"B_i"}}, {"sum", {"sum"}}, {"point", {"P(t)"}}},
+            .mistakes = {
+                {"basis", "basis", "reverse", "swapped t and 1 − t: the weights came out reversed"},
+                {"hull", "inside hull", "not", "thought P(t) may leave the control points' hull"},
+            },
+        },
     };
     return spec;
 }

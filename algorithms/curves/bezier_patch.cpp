@@ -106,6 +106,19 @@ const Spec& BezierPatch::spec() {
             {"tessellate",
              "the surface sampled on an (N + 1) × (N + 1) grid and split into 2N² triangles"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"column", {"Q_j"}},
+                {"point", {"P(s,t)"}},
+                {"derivatives", {"dP/ds", "dP/dt"}},
+                {"normal", {"N"}},
+            },
+            .mistakes = {
+                {"normal", "N", "negate", "crossed dP/dt × dP/ds: the normal points inwards"},
+                {"derivatives", "dP/ds", "swap:dP/dt", "mixed up the s and t directions"},
+            },
+        },
     };
     return spec;
 }

@@ -126,6 +126,23 @@ const Spec& BezierSpline::spec() {
             {"joint-broken", "the pieces do not even meet"},
             {"summary", "the whole spline's continuity: that of its weakest joint"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"tangent", {"v_i"}},
+                {"segment", {"segment"}},
+                {"joint-c1", {"Q_1 − Q_0"}},
+                {"joint-g1", {"β"}},
+                {"joint-c2", {"second difference P", "second difference Q"}},
+            },
+            .mistakes = {
+                {"joint-g1", "", "event:joint-c1",
+                 "called the joint C1 though the tangents differ by β"},
+                {"joint-c2", "", "event:joint-c1", "compared only the first differences"},
+                {"joint-g1", "Q_1 − Q_0", "negate",
+                 "took Q_0 − Q_1 for the next segment's tangent"},
+            },
+        },
     };
     return spec;
 }

@@ -125,6 +125,19 @@ const Spec& DeCasteljau::spec() {
              "the triangle's two edges are the control polygons of the curve's halves"},
         },
         {{"/t", "t", 0, 1}},
+        {
+            .predict = {
+                {"level", {}},
+                {"point", {"P(t)"}},
+                {"tangent", {"P′(t)"}},
+                {"subdivide", {"left", "right"}},
+            },
+            .mistakes = {
+                {"tangent", "P′(t)", "negate", "took the last difference the wrong way round"},
+                {"subdivide", "right", "reverse",
+                 "listed the right half's control points backwards"},
+            },
+        },
     };
     return spec;
 }

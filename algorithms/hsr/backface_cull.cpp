@@ -42,6 +42,16 @@ const Spec& BackfaceCull::spec() {
              "N·V = 0: the face is seen exactly edge-on; by the course's test it is kept"},
             {"done", "every face decided: the kept faces go on to hidden-surface removal"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"culled", {"N·V"}}, {"kept", {"N·V"}}},
+            .mistakes = {
+                {"culled", "N", "negate", "took the vertices clockwise: the normal points inwards"},
+                {"culled", "V", "negate",
+                 "took V from the polygon to the eye instead of eye to polygon"},
+                {"kept", "", "event:culled", "culled when N·V < 0: the test turned round"},
+            },
+        },
     };
     return spec;
 }

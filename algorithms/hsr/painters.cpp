@@ -443,6 +443,19 @@ const Spec& Painters::spec() {
             {"draw", "one polygon scan-converted over what is behind it"},
             {"done", "every polygon drawn back to front: the visible image"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"pass", {}}, {"move", {}}, {"split", {}}},
+            .mistakes = {
+                {"pass", "", "event:move", "moved Q although one of the tests had passed"},
+                {"move", "", "event:pass", "kept the order although every test failed"},
+                {"split", "", "event:move", "moved a polygon of a cycle instead of splitting it"},
+                {"pass", "P", "swap:Q", "ran the tests with P and Q the wrong way round"},
+            },
+            .input_kind = "hsr-scene",
+            .compare = {"ids"},
+            .costs = {"pair_tests", "moves", "splits"},
+        },
     };
     return spec;
 }

@@ -195,6 +195,26 @@ const Spec& Warnock::spec() {
             {"split", "the area is not simple: split into four (or two) smaller areas"},
             {"done", "the stack is empty: every pixel is decided"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"split", {}},
+                {"single", {}},
+                {"surrounder", {}},
+                {"empty", {}},
+                {"pixel", {}},
+            },
+            .mistakes = {
+                {"single", "", "event:split",
+                 "kept subdividing an area that holds a single polygon"},
+                {"surrounder", "", "event:split",
+                 "missed the surrounding polygon in front and split"},
+                {"split", "", "event:single", "drew an area with overlapping polygons as simple"},
+            },
+            .input_kind = "hsr-scene",
+            .compare = {"ids"},
+            .costs = {"areas", "classifications"},
+        },
     };
     return spec;
 }

@@ -64,6 +64,20 @@ const Spec& ZBuffer::spec() {
             {"pixel-keep", "the buffer already holds something as near or nearer: unchanged"},
             {"done", "every polygon drawn: the colour buffer is the visible image"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"polygon", {"writes"}}, {"pixel-write", {"z"}}, {"pixel-keep", {"z"}}},
+            .mistakes = {
+                {"pixel-keep", "", "event:pixel-write",
+                 "compared with > and let the farther polygon overwrite the nearer"},
+                {"pixel-write", "", "event:pixel-keep",
+                 "kept the old colour though the new z is nearer"},
+                {"pixel-write", "z", "keep", "forgot to step z along the span"},
+            },
+            .input_kind = "hsr-scene",
+            .compare = {"ids"},
+            .costs = {"compares", "writes"},
+        },
     };
     return spec;
 }

@@ -204,6 +204,24 @@ const Spec& Barycentric::spec() {
             {"on-edge", "all weights ≥ 0 and one (or two, at a vertex) is 0: on the boundary"},
             {"outside", "a weight < 0: the point is beyond the edge opposite that vertex"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"area", {"area"}},
+                {"areas", {"A_a", "A_b"}},
+                {"ratios", {"alpha", "beta"}},
+                {"inside", {}},
+                {"on-edge", {}},
+                {"outside", {}},
+            },
+            .mistakes = {
+                {"areas", "A_a", "negate",
+                 "went round the sub-triangle clockwise: its area flipped sign"},
+                {"ratios", "alpha", "swap:beta", "paired the areas with the wrong vertices"},
+                {"outside", "", "event:inside",
+                 "missed the negative weight and called the point inside"},
+            },
+        },
     };
     return spec;
 }

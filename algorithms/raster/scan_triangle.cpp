@@ -128,6 +128,20 @@ const Spec& ScanTriangle::spec() {
             {"empty-span", "a scanline whose span holds no pixel centre (inside the grid)"},
             {"done", "all scanlines are filled"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"split", {"x_split"}},
+                {"slopes", {"m_long"}},
+                {"span", {"x_left", "x_right"}},
+            },
+            .mistakes = {
+                {"span", "i_first", "off-by-one",
+                 "started the span at the pixel whose centre is left of x_left"},
+                {"span", "x_right", "keep", "forgot to step x_right by its inverse slope"},
+                {"slopes", "m_upper", "negate", "took dx/dy of the upper edge from the wrong end"},
+            },
+        },
     };
     return spec;
 }

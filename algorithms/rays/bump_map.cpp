@@ -46,6 +46,19 @@ const Spec& BumpMap::spec() {
             {"singular", "P_u × P_v = 0 (a pole, an apex): there is no normal to perturb"},
             {"perturbed", "the perturbed normal, normalised: what the lighting uses"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"height", {"B"}},
+                {"differences", {"B_u", "B_v"}},
+                {"normal", {"D"}},
+                {"perturbed", {"n'"}},
+            },
+            .mistakes = {
+                {"normal", "D", "negate", "added the height gradient where it is subtracted"},
+                {"partials", "P_u", "swap:P_v", "mixed up P_u and P_v"},
+            },
+        },
     };
     return spec;
 }

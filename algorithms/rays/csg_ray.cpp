@@ -136,6 +136,26 @@ const Spec& CsgRay::spec() {
             {"exit-hit", "the eye is inside the solid: the hit is where the ray leaves it"},
             {"miss", "no end of the root's list lies ahead of the eye: the ray misses the solid"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"leaf", {}},
+                {"hit", {"t", "n"}},
+                {"difference", {}},
+                {"union", {}},
+                {"intersection", {}},
+            },
+            .mistakes = {
+                {"hit", "n", "negate", "kept B's outward normal where A − B shows B's inside"},
+                {"difference", "A", "swap:B", "worked out B − A instead of A − B"},
+                {"leaf", "b", "negate", "took the sign of b wrong"},
+            },
+            .variants = {
+                {"union", "/tree/op", "\"union\""},
+                {"intersection", "/tree/op", "\"intersection\""},
+                {"difference", "/tree/op", "\"difference\""},
+            },
+        },
     };
     return spec;
 }

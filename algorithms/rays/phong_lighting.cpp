@@ -96,6 +96,25 @@ const Spec& PhongLighting::spec() {
             {"no-specular", "the light is behind the surface: no highlight"},
             {"total", "the three terms summed"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"diffuse", {"n_dot_l", "diffuse"}},
+                {"phong-specular", {"r_dot_v", "specular"}},
+                {"blinn-specular", {"n_dot_h", "specular"}},
+                {"total", {"intensity"}},
+            },
+            .mistakes = {
+                {"point-light", "l", "negate", "took l from the light to the point"},
+                {"view", "v", "negate", "took v from the eye to the point"},
+                {"blinn-specular", "", "event:phong-specular",
+                 "used r · v where Blinn-Phong needs n · h"},
+            },
+            .variants = {
+                {"phong", "/model", "\"phong\""},
+                {"blinn-phong", "/model", "\"blinn-phong\""},
+            },
+        },
     };
     return spec;
 }

@@ -174,6 +174,21 @@ const Spec& RayQuadric::spec() {
             {"normal", "the gradient of F, carried back by the inverse transpose and normalised"},
             {"apex", "the gradient vanishes (the cone's apex): the normal is undefined"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"coefficients", {"b", "c"}},
+                {"two-roots", {"discriminant"}},
+                {"nearest", {"t"}},
+                {"hit-point", {"P"}},
+                {"normal", {"n"}},
+            },
+            .mistakes = {
+                {"normal", "n", "copy:grad_F", "forgot to normalise the gradient"},
+                {"coefficients", "c", "negate", "took c = r² − |E − C|²: its sign flipped"},
+                {"coefficients", "b", "negate", "took the sign of b wrong"},
+            },
+        },
     };
     return spec;
 }

@@ -71,6 +71,22 @@ const Spec& RayTracer::spec() {
              "the bounding volume hierarchy over the scene's objects is built (once, before the "
              "first ray): what a ray's nearest-hit search will walk"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"hit", {"t", "n"}},
+                {"lit", {"n·l"}},
+                {"reflect", {"direction"}},
+                {"refract", {"cos θ2"}},
+            },
+            .mistakes = {
+                {"lit", "l", "negate", "took l from the light to the point"},
+                {"shadowed", "", "event:lit", "ignored the blocker on the way to the light"},
+                {"reflect", "direction", "negate", "reflected the wrong way: r = 2(d·n)n − d"},
+                {"hit", "n", "negate", "took the normal pointing into the surface"},
+            },
+            .costs = {"rays/total"},
+        },
     };
     return s;
 }

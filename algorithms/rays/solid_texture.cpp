@@ -63,6 +63,20 @@ const Spec& SolidTextureAlgo::spec() {
              "the octaves of |noise| summed at doubling frequencies and halving weights"},
             {"colour", "the worked point's colour from its noise"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"lattice", {"cell"}},
+                {"fade", {"fade"}},
+                {"interpolate", {"noise"}},
+                {"colour", {"colour"}},
+            },
+            .mistakes = {
+                {"lattice", "q", "copy:p", "forgot to scale p by the frequency"},
+                {"turbulence", "", "event:colour",
+                 "skipped the turbulence sum and used plain noise"},
+            },
+        },
     };
     return spec;
 }

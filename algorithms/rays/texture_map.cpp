@@ -60,6 +60,24 @@ const Spec& TextureMap::spec() {
             {"level-sample", "a bilinear lookup at one of the two levels around λ"},
             {"blend", "the two levels' colours blended by the fraction of λ (trilinear)"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"sphere-uv", {"uv"}},
+                {"plane-uv", {"uv"}},
+                {"wrap", {"st"}},
+                {"nearest", {"texel"}},
+                {"bilinear", {"texel", "color"}},
+            },
+            .mistakes = {
+                {"sphere-uv", "uv", "reverse", "swapped u and v"},
+                {"bilinear", "weights", "reverse", "paired the weights with the wrong texels"},
+            },
+            .variants = {
+                {"nearest", "/texture/filter", "\"nearest\""},
+                {"bilinear", "/texture/filter", "\"bilinear\""},
+            },
+        },
     };
     return spec;
 }

@@ -234,6 +234,20 @@ const Spec& Sampling::spec() {
             {"row", "one row of pixels sampled once at the centre and supersampled"},
             {"compare", "the point-sampled and the supersampled image side by side"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"sample", {"x_n"}}, {"fold", {"alias"}}},
+            .mistakes = {
+                {"fold", "alias", "copy:f", "forgot to fold: took the alias to be f itself"},
+                {"fold", "aliased", "not", "compared f with f_s instead of f_s / 2"},
+                {"fold", "k", "off-by-one", "folded about the wrong multiple of f_s"},
+            },
+            .variants = {
+                {"nearest", "/reconstruction", "\"nearest\""},
+                {"linear", "/reconstruction", "\"linear\""},
+                {"sinc", "/reconstruction", "\"sinc\""},
+            },
+        },
     };
     return spec;
 }

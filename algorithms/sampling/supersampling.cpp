@@ -96,6 +96,26 @@ const Spec& Supersampling::spec() {
             {"point", "a study: one pattern's RMS error at one N, over all the edges"},
             {"slopes", "a study: each pattern's slope of log error against log N"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"inside", {}},
+                {"outside", {}},
+                {"estimate", {"estimate"}},
+                {"exact", {"error"}},
+            },
+            .mistakes = {
+                {"inside", "sum_wv", "keep", "forgot to add the covered sample's weight"},
+                {"inside", "sum_w", "keep", "forgot to add w_k to the weight sum"},
+                {"outside", "", "event:inside", "counted a sample outside the shape as covered"},
+            },
+            .variants = {
+                {"regular", "/pattern", "\"regular\""},
+                {"random", "/pattern", "\"random\""},
+                {"jittered", "/pattern", "\"jittered\""},
+                {"poisson", "/pattern", "\"poisson\""},
+            },
+        },
     };
     return spec;
 }

@@ -113,6 +113,29 @@ const Spec& Shading::spec() {
             {"pixel-hidden", "the chosen pixel: a nearer triangle is already there"},
             {"done", "every triangle is drawn"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"flat-face", {"flat_color"}},
+                {"span", {"x_left", "x_right"}},
+                {"pixel-flat", {"color"}},
+                {"pixel-gouraud", {"lambda", "color"}},
+                {"pixel-phong", {"lambda", "color"}},
+            },
+            .mistakes = {
+                {"span", "i_first", "off-by-one", "started the span one pixel off"},
+                {"span", "x_left", "keep", "forgot to step x_left along its edge"},
+                {"pixel-phong", "lambda", "reverse",
+                 "paired the weights with the vertices backwards"},
+                {"pixel-phong", "", "event:pixel-gouraud", "interpolated colours, not normals"},
+            },
+            .costs = {"evaluations"},
+            .variants = {
+                {"flat", "/model", "\"flat\""},
+                {"gouraud", "/model", "\"gouraud\""},
+                {"phong", "/model", "\"phong\""},
+            },
+        },
     };
     return spec;
 }

@@ -106,6 +106,21 @@ const Spec& ArbitraryAxis::spec() {
             {"compose", "the five matrices multiplied: the rotation about a in one matrix"},
             {"rotate-point", "one point rotated by R"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"to-plane", {"phi_deg"}},
+                {"to-axis", {"gamma_deg"}},
+                {"rotate-point", {"P'"}},
+            },
+            .mistakes = {
+                {"to-axis", "R_z(-gamma)", "transpose",
+                 "rotated by +gamma: c turned away from the axis"},
+                {"rotate", "R_x(theta)", "transpose", "rotated by -theta: the sine signs swapped"},
+                {"undo-axis", "R_z(gamma)", "transpose",
+                 "undid with R_z(-gamma) again, not its inverse"},
+            },
+        },
     };
     return spec;
 }

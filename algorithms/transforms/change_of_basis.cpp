@@ -207,6 +207,24 @@ const Spec& ChangeOfBasis::spec() {
              "one vector's F1 coordinates rewritten relative to F2, without the "
              "translation"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"world-from-f2", {"world_from_F2"}},
+                {"inverse-orthonormal", {"F2_from_world"}},
+                {"compose", {"M12"}},
+                {"map-point", {"p'"}},
+                {"map-vector", {"u'"}},
+            },
+            .mistakes = {
+                {"world-from-f2", "world_from_F2", "transpose",
+                 "wrote F2's basis vectors into the rows instead of the columns"},
+                {"inverse-orthonormal", "F2_from_world", "transpose",
+                 "transposed the whole 4x4 to invert it, translation included"},
+                {"map-point", "p'", "copy:p",
+                 "kept the old coordinates: the point does not move, so they must be the same"},
+            },
+        },
     };
     return spec;
 }

@@ -70,6 +70,16 @@ const Spec& EulerAngles::spec() {
             {"gimbal-lock", "the middle angle is ±90°: the first and last rolls share an axis"},
             {"no-lock", "the middle angle is not ±90°: the three angles act independently"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"roll", {"so far"}}, {"compose", {"R"}}},
+            .mistakes = {
+                {"roll", "R_y(theta2)", "transpose", "put the minus sign of R_y on the wrong sine"},
+                {"roll", "so far", "keep", "forgot to multiply this roll into the product"},
+                {"gimbal-lock", "", "event:no-lock",
+                 "missed that theta2 = ±90° locks the outer axes"},
+            },
+        },
     };
     return spec;
 }

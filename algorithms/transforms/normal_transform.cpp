@@ -95,6 +95,22 @@ const Spec& NormalTransform::spec() {
             {"inverse-transpose", "the normal matrix (L⁻¹)ᵀ"},
             {"normal-correct", "N n, perpendicular to every transformed tangent"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"tangents", {"Lt1", "Lt2"}},
+                {"naive-fails", {"Ln"}},
+                {"inverse-transpose", {"N"}},
+                {"normal-correct", {"n_prime"}},
+            },
+            .mistakes = {
+                {"inverse-transpose", "N", "copy:L", "transformed the normal by L, like a tangent"},
+                {"naive-fails", "naive_ok", "not",
+                 "took L n to be still perpendicular to the tangents"},
+                {"normal-correct", "n_prime", "copy:n",
+                 "left the normal as it was: thought normals are unchanged by the transform"},
+            },
+        },
     };
     return spec;
 }

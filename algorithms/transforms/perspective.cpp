@@ -204,6 +204,29 @@ const Spec& Perspective::spec() {
             {"segment-rejected", "both ends in front of the near plane: discarded"},
             {"segment-divide", "the kept part's endpoints divided to NDC"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"projection-matrix", {"P"}},
+                {"inside-volume", {"p_clip"}},
+                {"outside-volume", {"p_clip"}},
+                {"divide", {"p_ndc"}},
+                {"to-viewport", {"p_device"}},
+                {"segment-clipped", {"t0", "t1"}},
+            },
+            .mistakes = {
+                {"projection-matrix", "P", "transpose", "wrote the projection matrix transposed"},
+                {"outside-volume", "", "event:inside-volume",
+                 "checked x and y against w but not z"},
+                {"behind-eye", "", "event:outside-volume", "missed w < 0 and divided anyway"},
+                {"segment-clipped", "d_A", "negate",
+                 "took A's distance to the plane with the wrong sign"},
+            },
+            .variants = {
+                {"course", "/convention", "\"course\""},
+                {"opengl", "/convention", "\"opengl\""},
+            },
+        },
     };
     return spec;
 }

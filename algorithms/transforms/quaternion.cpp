@@ -318,6 +318,25 @@ const Spec& Quaternion::spec() {
             {"sign", "from_matrix: q and −q are the same rotation; the one with w ≥ 0 is kept"},
             {"check-back", "from_matrix: M(q) rebuilt and compared with R"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"scalar-part", {"s1 s2", "v1 · v2"}},
+                {"vector-part", {"v1 × v2"}},
+                {"product", {"q1 q2"}},
+                {"reverse", {"q2 q1"}},
+                {"inverse", {"q⁻¹"}},
+                {"image", {"P′"}},
+                {"build", {"q"}},
+                {"extract", {"q"}},
+            },
+            .mistakes = {
+                {"vector-part", "v1 × v2", "negate",
+                 "crossed v2 × v1: the sign of the cross term flipped"},
+                {"reverse", "q2 q1", "copy:q1 q2", "assumed q2 q1 is the same as q1 q2"},
+                {"differ", "commute", "not", "thought quaternion products commute"},
+            },
+        },
     };
     return spec;
 }

@@ -151,6 +151,15 @@ const Spec& SceneDag::spec() {
             {"draw", "the node's shape is drawn with the top matrix (its world matrix)"},
             {"pop", "the node is finished: its matrix is popped and the parent's is current"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"push", {}}, {"multiply", {}}, {"draw", {}}, {"pop", {}}},
+            .mistakes = {
+                {"push", "depth", "keep",
+                 "forgot to push: the child's matrix replaces the parent's"},
+                {"pop", "depth", "keep", "forgot to pop when leaving a node"},
+            },
+        },
     };
     return spec;
 }

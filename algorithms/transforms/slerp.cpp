@@ -168,6 +168,15 @@ const Spec& Slerp::spec() {
             {"matrix", "q(u) written as a 3×3 rotation matrix"},
             {"sample", "one u on the paths: slerp vs lerp of matrices vs lerp of Euler angles"},
         },
+        {},  // no sliders
+        {
+            .predict = {{"dot", {"cos_omega"}}, {"angle", {"omega_deg", "w0"}}, {"blend", {"q"}}},
+            .mistakes = {
+                {"angle", "w0", "swap:w1", "put sin(u ω) on q0 and sin((1 − u) ω) on q1"},
+                {"dot", "flipped", "not", "got the shorter-arc test backwards when negating q1"},
+                {"matrix", "M", "transpose", "wrote the matrix of conj(q): the inverse rotation"},
+            },
+        },
     };
     return spec;
 }

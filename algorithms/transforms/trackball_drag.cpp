@@ -140,6 +140,40 @@ const Spec& TrackballDrag<K>::spec() {
                 {"path-dependent", "the drag's rotation differs from one step first to last"});
             s.events.push_back({"loop-drifts", "a closed mouse loop leaves the ball turned"});
         }
+        if constexpr (kArcball) {
+            s.study = {
+                .predict = {
+                    {"sample-on-sphere", {"s"}},
+                    {"target-on-sphere", {"t"}},
+                    {"pair-rotation", {"axis", "angle_deg"}},
+                    {"accumulate", {"q_total"}},
+                },
+                .mistakes = {
+                    {"pair-rotation", "axis", "negate",
+                     "crossed t × s: the axis points the other way"},
+                    {"accumulate", "q_total", "keep",
+                     "forgot to compose this pair's turn into q_total"},
+                    {"target-on-sphere", "", "event:target-outside",
+                     "pulled T onto the rim though it lies inside the ball"},
+                },
+            };
+        } else {
+            s.study = {
+                .predict = {
+                    {"sample-on-sphere", {"s"}},
+                    {"velocity", {"v"}},
+                    {"pair-rotation", {"axis", "angle_deg"}},
+                    {"accumulate", {"q_total"}},
+                },
+                .mistakes = {
+                    {"velocity", "v", "negate", "took the motion as S − T"},
+                    {"pair-rotation", "axis", "negate",
+                     "crossed v × s: the axis points the other way"},
+                    {"accumulate", "q_total", "keep",
+                     "forgot to compose this pair's turn into q_total"},
+                },
+            };
+        }
         return s;
     }();
     return spec;

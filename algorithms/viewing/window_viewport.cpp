@@ -147,6 +147,21 @@ const Spec& WindowViewport::spec() {
             {"point-to-device", "one point mapped from NDC to device coordinates"},
             {"compose", "the two matrices multiplied: window to device in one step"},
         },
+        {},  // no sliders
+        {
+            .predict = {
+                {"window-to-ndc", {"M_ndc"}},
+                {"point-to-ndc", {"P_ndc"}},
+                {"ndc-to-viewport", {"M_vp"}},
+                {"point-to-device", {"P_device"}},
+            },
+            .mistakes = {
+                {"distortion", "distorted", "not",
+                 "compared the sizes, not the aspect ratios, and missed the stretch"},
+                {"window-to-ndc", "M_ndc", "transpose",
+                 "put the offsets in the bottom row, as for row vectors"},
+            },
+        },
     };
     return spec;
 }
