@@ -171,13 +171,13 @@ struct Caption {
 
 Caption make_caption_box(Caption c, const ScreenMap& map, const Fonts& f);
 
-Caption make_caption(const ScreenMap& map, const Session& s, bool interactive) {
+Caption make_caption(const ScreenMap& map, Session& s, bool interactive) {
     Caption c;
     if (!s.algorithm) return c;
     c.title = s.algorithm->spec->title;
     const std::optional<std::size_t> n = s.length();
     c.detail = "step " + std::to_string(s.index()) + " / " + (n ? std::to_string(*n) : "?");
-    if (const StepInfo* info = s.last_step(); info && !info->event.empty())
+    if (const StepInfo* info = s.shown_step(); info && !info->event.empty())
         c.detail += "  ·  " + info->event;
     if (!s.input_error.empty()) c.detail += "  ·  input refused: showing the last good run";
     if (s.solution_hidden())  // its length would hint at the answer
