@@ -141,7 +141,7 @@ const Spec& Bvh::spec() {
                 {"leaf-no-gain", "", "event:split-sah",
                  "split though the SAH cost is not below a leaf"},
             },
-            .costs = {"counts/box_tests", "counts/primitive_tests"},
+            .costs = {"counts"},
             .variants = {{"median", "/split", "\"median\""}, {"sah", "/split", "\"sah\""}},
         },
     };

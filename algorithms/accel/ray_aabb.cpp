@@ -104,7 +104,7 @@ const Spec& RayAabb::spec() {
             .mistakes = {
                 {"slab", "t_min", "other:t_near", "updated t_min with min instead of max"},
                 {"slab", "t_max", "other:t_far", "updated t_max with max instead of min"},
-                {"hit", "t_hit", "other:t_max", "took the exit t_max as the hit"},
+                {"hit", "t_hit", "copy:t_max", "took the exit t_max as the hit"},
             },
         },
     };

@@ -156,7 +156,7 @@ const Spec& UniformGrid::spec() {
                  "accepted a hit beyond the cell without checking"},
                 {"empty-cell", "t_max_y", "keep", "stepped a cell but forgot to advance t_max"},
             },
-            .costs = {"counts/cells_visited", "counts/primitive_tests"},
+            .costs = {"counts"},
         },
     };
     return spec;

@@ -316,7 +316,7 @@ const Spec& ColourSpaces::spec() {
             },
             .mistakes = {
                 {"saturation", "S", "copy:C", "forgot to divide the chroma by V"},
-                {"saturation", "V", "other:min",
+                {"saturation", "V", "copy:min",
                  "took V as the smallest component, not the largest"},
                 {"grey", "", "event:hue", "worked out a hue for a grey, dividing by C = 0"},
             },

@@ -68,6 +68,8 @@ const Spec& ZBuffer::spec() {
         {
             .predict = {{"polygon", {"writes"}}, {"pixel-write", {"z"}}, {"pixel-keep", {"z"}}},
             .mistakes = {
+                {"polygon", "writes", "copy:compares",
+                 "wrote every covered pixel without the depth test"},
                 {"pixel-keep", "", "event:pixel-write",
                  "compared with > and let the farther polygon overwrite the nearer"},
                 {"pixel-write", "", "event:pixel-keep",

@@ -85,7 +85,7 @@ const Spec& RayTracer::spec() {
                 {"reflect", "direction", "negate", "reflected the wrong way: r = 2(d·n)n − d"},
                 {"hit", "n", "negate", "took the normal pointing into the surface"},
             },
-            .costs = {"rays/total"},
+            .costs = {"rays"},
         },
     };
     return s;
