@@ -163,10 +163,10 @@ void draw_log(Session& s, float height) {
         const std::size_t step = log.first + i;
         // Find the bug hides the narration: the event stands for it.
         const StepInfo& entry = log.steps[i];
-        const std::string said = entry.narration.empty() ? "(" + entry.event + ")" : entry.narration;
-        const std::string text =
-            wrap_at_spaces(ImGui::GetFont(), ImGui::GetFontSize(),
-                           std::to_string(step) + ".  " + said, wrap);
+        const std::string said =
+            entry.narration.empty() ? "(" + entry.event + ")" : entry.narration;
+        const std::string text = wrap_at_spaces(ImGui::GetFont(), ImGui::GetFontSize(),
+                                                std::to_string(step) + ".  " + said, wrap);
         const ImVec2 size = ImGui::CalcTextSize(text.c_str());
         ImGui::PushID(static_cast<int>(i));
         const ImVec2 at = ImGui::GetCursorScreenPos();

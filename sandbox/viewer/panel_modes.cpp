@@ -86,7 +86,11 @@ void draw_modes_row(Session& s) {
     const std::vector<CompareOption> options = s.compare_options();
     CompareState& c = s.study.compare;
     c.choice = std::clamp(c.choice, 0, std::max(0, static_cast<int>(options.size()) - 1));
-    const float combo = ImGui::GetFontSize() * 13;
+    float combo = ImGui::GetFontSize() * 6;
+    for (const CompareOption& o : options)
+        combo = std::max(combo,
+                         ImGui::CalcTextSize(o.label.c_str()).x + ImGui::GetFrameHeight() * 1.6f);
+    combo = std::min(combo, ImGui::GetFontSize() * 17);
     flow(combo + button_width("Close compare") + ImGui::GetFontSize() * 3);
     ImGui::TextDisabled("|");
     ImGui::SameLine();
@@ -396,7 +400,7 @@ void draw_side(Session& side, Session& owner, const char* name, const std::strin
     ImGui::BeginChild(name, size, false,
                       ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     const float line = ImGui::GetTextLineHeightWithSpacing();
-    const float strip = std::round(line * 3.4f);
+    const float strip = std::round(line * 4.3f);
     ImGui::BeginChild("canvas", ImVec2(size.x, std::max(size.y - strip, 20.0f)), false,
                       ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     draw_canvas(side, interactive);

@@ -208,7 +208,8 @@ void Session::reset() {
 void Session::jump(std::size_t step) {
     playing = false;
     if (!can_step()) return;
-    if (study.mode == Mode::Predict) step = std::min(step, std::max(index(), study.predict.reached));
+    if (study.mode == Mode::Predict)
+        step = std::min(step, std::max(index(), study.predict.reached));
     timeline->jump(step);
 }
 

@@ -85,28 +85,28 @@ struct PredictState {
 };
 
 struct BugState {
-    std::uint64_t seed = 1;                   // the seed field
-    std::optional<study::PlantedBug> bug;     // the bug planted in this run
-    std::optional<study::BugGrade> grade;     // the last answer's verdict
-    std::size_t answered_step = 0;            // the step that answer named
+    std::uint64_t seed = 1;                // the seed field
+    std::optional<study::PlantedBug> bug;  // the bug planted in this run
+    std::optional<study::BugGrade> grade;  // the last answer's verdict
+    std::size_t answered_step = 0;         // the step that answer named
     bool over = false;  // answered right, or given up: the explanation stays until leaving
 };
 
 // One choice for Compare's side B.
 struct CompareOption {
     enum class Kind { Variant, Algorithm, Edited } kind = Kind::Variant;
-    std::string label;                    // what the list shows
+    std::string label;                     // what the list shows
     const Algorithm* algorithm = nullptr;  // side B's algorithm
     const Variant* variant = nullptr;      // Kind::Variant: the variant applied to B's input
 };
 
 struct CompareState {
     bool open = false;
-    int choice = 0;                   // index into Session::compare_options()
-    std::string edited_text;          // Kind::Edited: side B's input as JSON text
-    bool editing = false;             // the editor window for edited_text is shown
-    std::string error;                // why side B did not start
-    std::shared_ptr<Session> b;       // side B: a session of its own, stepped with this one
+    int choice = 0;              // index into Session::compare_options()
+    std::string edited_text;     // Kind::Edited: side B's input as JSON text
+    bool editing = false;        // the editor window for edited_text is shown
+    std::string error;           // why side B did not start
+    std::shared_ptr<Session> b;  // side B: a session of its own, stepped with this one
     study::Side side_a, side_b;
     std::optional<study::Comparison> result;  // of the two recorded runs, made once per pair
     std::uint64_t run_a = std::numeric_limits<std::uint64_t>::max();  // the runs it is for
@@ -226,7 +226,7 @@ struct Session {
     // Switches mode; Predict and Find the bug record the run first (a refusal, say a run too
     // long to keep, goes to the status line and the mode stays Watch). Returns false then.
     bool set_mode(Mode m);
-    void cycle_mode();  // Watch → Predict → Find the bug → Watch (the M key)
+    void cycle_mode();            // Watch → Predict → Find the bug → Watch (the M key)
     const study::Trace* trace();  // the current run's, recorded once per run; null if refused
     // Every frame: re-enters the mode when the run changed under it (an edit, a dragged
     // handle), and keeps Compare's side B on this run's step.
@@ -249,9 +249,12 @@ struct Session {
     void give_up_bug();
     // Compare: the choices for side B, opening it beside this run, closing it.
     std::vector<CompareOption> compare_options() const;
+    const Variant* input_variant() const;  // the variant the input is in, if any
     bool open_compare(int choice);
     void close_compare();
-    bool comparing() const { return study.compare.open && study.compare.b && study.compare.b->timeline; }
+    bool comparing() const {
+        return study.compare.open && study.compare.b && study.compare.b->timeline;
+    }
     GridTextures* compare_textures = nullptr;  // side B's grid textures (its own slots)
 
     // --- moving (each does nothing without a run, or while an exam's solution is hidden) ---

@@ -216,12 +216,27 @@ void Session::give_up_bug() {
 
 // --- compare ---------------------------------------------------------------------------------
 
+const Variant* Session::input_variant() const {
+    if (!algorithm) return nullptr;
+    for (const Variant& v : algorithm->spec->study.variants) {
+        const json::json_pointer at(v.field);
+        try {
+            if (input.contains(at) && input.at(at) == json::parse(v.value)) return &v;
+        } catch (const std::exception&) {  // a malformed declaration: no variant
+        }
+    }
+    return nullptr;
+}
+
 std::vector<CompareOption> Session::compare_options() const {
     std::vector<CompareOption> out;
     if (!algorithm) return out;
     const Spec& spec = *algorithm->spec;
+    // The variants this input is not already in (Blinn-Phong's input compares with Phong).
+    const Variant* current = input_variant();
     for (const Variant& v : spec.study.variants)
-        out.push_back({CompareOption::Kind::Variant, spec.id + "@" + v.name, algorithm, &v});
+        if (&v != current)
+            out.push_back({CompareOption::Kind::Variant, spec.id + "@" + v.name, algorithm, &v});
     if (!spec.study.input_kind.empty())
         for (const Algorithm& a : registry.all())
             if (&a != algorithm && a.spec->study.input_kind == spec.study.input_kind)
@@ -250,7 +265,8 @@ bool Session::open_compare(int choice) {
     const CompareOption& o = options[choice];
     const bool same_choice = c.choice == choice && c.b;
     c.choice = choice;
-    c.side_a = study::Side{algorithm, nullptr, algorithm->spec->id};
+    const Variant* va = o.kind == CompareOption::Kind::Variant ? input_variant() : nullptr;
+    c.side_a = study::Side{algorithm, va, algorithm->spec->id + (va ? "@" + va->name : "")};
     c.side_b = study::Side{o.algorithm, o.variant, o.label};
     json input_b = study::side_input(c.side_b, input);
     if (o.kind == CompareOption::Kind::Edited) {

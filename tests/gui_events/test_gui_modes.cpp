@@ -34,6 +34,8 @@ void choose(Driver& d, const std::string& id) {
 void shot(Driver& d, const std::string& name) {
     const char* dir = std::getenv("CG_SHOTS");
     if (!dir) return;
+    d.move({2, d.size().y - 2.0});  // no tooltip over what is looked at
+    d.frames(3);
     const glm::ivec2 size = d.size();
     cg::viewer::write_png(std::string(dir) + "/" + name + ".png", size.x, size.y,
                           d.viewer().last_frame());
@@ -196,9 +198,12 @@ TEST_CASE("gui modes: Find the bug — the shown working is the tampered one; na
 TEST_CASE("gui modes: Compare — a variant side by side, stepped together", "[modes][gui-events]") {
     Driver d;
     choose(d, "phong-lighting");
-    // Side B: the Blinn-Phong variant, picked from the list.
+    // Side B: the other variant (Phong for Blinn-Phong, or back), picked from the list.
+    const std::vector<cg::viewer::CompareOption> options = d.session().compare_options();
+    REQUIRE_FALSE(options.empty());
+    REQUIRE(options.front().kind == cg::viewer::CompareOption::Kind::Variant);
     d.click("compare with");
-    d.click("compare option:phong-lighting@blinn-phong");
+    d.click("compare option:" + options.front().label);
     d.click("Compare");
     REQUIRE(d.session().comparing());
     const cg::viewer::CompareState& c = d.session().study.compare;
@@ -214,17 +219,16 @@ TEST_CASE("gui modes: Compare — a variant side by side, stepped together", "[m
     d.key(SDLK_RIGHT);
     CHECK(d.session().index() == 1);
     CHECK(c.b->index() == 1);
-    // The first differing step, marked and a click away.
-    if (c.result->first_step) {
-        CHECK(d.drawn("first difference"));
-        d.click("Go to first difference");
-        CHECK(d.session().index() == *c.result->first_step);
-        CHECK(c.b->index() == std::min(*c.result->first_step, c.result->steps_b));
-        shot(d, "compare-first-difference");
-    } else {
-        CHECK(c.result->agree);
-    }
+    // Phong and Blinn-Phong part at the specular step: marked, and a click away.
+    CHECK_FALSE(c.result->agree);
+    REQUIRE(c.result->first_step);
+    CHECK(d.drawn("first difference"));
     CHECK(d.drawn("compare verdict"));
+    d.click("Go to first difference");
+    CHECK(d.session().index() == *c.result->first_step);
+    CHECK(c.b->index() == std::min(*c.result->first_step, c.result->steps_b));
+    CHECK(c.b->last_step()->event != d.session().last_step()->event);
+    shot(d, "compare-first-difference");
 
     // Closing returns to one canvas.
     d.click("Compare");
