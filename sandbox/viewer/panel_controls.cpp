@@ -186,8 +186,8 @@ void draw_log(Session& s, float height) {
 // --- [layout] --------------------------------------------------------------------------------
 
 void draw_controls_panel(Session& s) {
-    draw_modes_row(s);
     draw_stepping(s);
+    draw_modes_row(s);  // after the stepping row: Tab, then → and Space, reach Back first
     // The files row's height is last frame's: it wraps onto more rows in a narrow window.
     const float files = s.files_height > 0 ? s.files_height : ImGui::GetFrameHeightWithSpacing();
     const float spacing = ImGui::GetStyle().ItemSpacing.y;

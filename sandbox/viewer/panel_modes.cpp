@@ -271,22 +271,28 @@ void draw_bug(Session& s) {
     if (b.grade) {
         ImGui::Spacing();
         const bool right = b.grade->correct;
+        const std::size_t n = b.answered_step;
+        // A wrong answer says only which way to look: the explanation would give it away.
+        const std::string headline =
+            right    ? "Right: step " + std::to_string(n) + " is the first wrong one."
+            : b.over ? "The first wrong step was " + std::to_string(b.bug->step) + "."
+            : n < b.bug->step
+                ? "Not step " + std::to_string(n) + ": it is right. The mistake comes later."
+                : "Not step " + std::to_string(n) + ": the first mistake comes before it.";
         ImGui::PushFont(s.fonts.bold);
-        coloured(right ? kOkText : kErrorText,
-                 right
-                     ? "Right: step " + std::to_string(b.answered_step) + " is the first wrong one."
-                 : b.over ? "The first wrong step was " + std::to_string(b.bug->step) + "."
-                          : "Not step " + std::to_string(b.answered_step) + ": look again.");
+        coloured(right ? kOkText : kErrorText, headline);
         ImGui::PopFont();
         s.note_widget(right ? "bug verdict right" : "bug verdict wrong");
         if (b.over) {
-            text_wrapped(b.grade->text);
-            ImGui::Spacing();
-            coloured(kMathText, "What step " + std::to_string(b.bug->step) +
-                                    " should say: " + b.bug->correct.narration);
+            // The library's text: its verdict line (said above), then the explanation and
+            // the right step with its pseudocode line.
+            const std::string& text = b.grade->text;
+            const std::size_t body = text.find('\n');
+            text_wrapped(body == std::string::npos ? text : text.substr(body + 1));
             if (k != b.bug->step) {
                 const std::string go = "Go to step " + std::to_string(b.bug->step);
                 if (ImGui::Button(go.c_str())) s.jump(b.bug->step);
+                s.note_widget("Go to bug");
             }
             small_hint(s, "New bug for another mistake, or Watch to leave.");
         }

@@ -202,6 +202,7 @@ void Session::answer_bug(std::size_t step) {
     b.grade = study::grade_bug_answer(*algorithm->spec, *b.bug, step);
     b.answered_step = step;
     b.over = b.grade->correct;
+    set_status(b.over ? "Found it. New bug for another, or Watch to leave." : "Look again.", false);
 }
 
 void Session::give_up_bug() {
@@ -211,6 +212,7 @@ void Session::give_up_bug() {
     b.grade->correct = false;
     b.answered_step = 0;
     b.over = true;
+    set_status("", false);
     jump(b.bug->step);
 }
 
