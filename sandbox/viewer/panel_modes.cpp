@@ -418,9 +418,16 @@ void draw_side(Session& side, Session& owner, const char* name, const std::strin
     const std::vector<std::string>& code = side.algorithm->spec->pseudocode;
     std::string code_line = at > 0 && at <= static_cast<int>(code.size()) ? code[at - 1] : "";
     code_line.erase(0, std::min(code_line.find_first_not_of(' '), code_line.size()));
+    // The first step where the two runs part is marked on both sides.
+    const study::Comparison* result =
+        owner.study.compare.result ? &*owner.study.compare.result : nullptr;
+    const bool parting = result && result->first_step && *result->first_step == owner.index();
     ImGui::PushFont(owner.fonts.bold);
-    ImGui::TextUnformatted(
-        (std::string(name) + "  " + label + "  ·  step " + std::to_string(side.index())).c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(parting ? kErrorText : kCaptionText));
+    ImGui::TextUnformatted((std::string(name) + "  " + label + "  ·  step " +
+                            std::to_string(side.index()) + (parting ? "  ·  first difference" : ""))
+                               .c_str());
+    ImGui::PopStyleColor();
     ImGui::PopFont();
     ImGui::PushFont(owner.fonts.mono);
     ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(kMathText));

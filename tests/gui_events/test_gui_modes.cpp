@@ -4,6 +4,7 @@
 //
 // With CG_SHOTS=DIR set, each test also saves the frames a person would look at as PNGs.
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cstdlib>
 #include <string>
 
@@ -53,12 +54,26 @@ int coloured_pixels(Driver& d, const cg::viewer::Box& box) {
     return n;
 }
 
+// The mean time of a frame over `n` frames, in milliseconds, as the student's loop draws them
+// (not read back for the test). Printed, not checked: llvmpipe's budget is 16 ms, and a
+// machine busy with other work would fail any fixed bound.
+double frame_ms(Driver& d, int n = 30) {
+    d.viewer().keep_frames(false);
+    const auto t0 = std::chrono::steady_clock::now();
+    d.frames(n);
+    const std::chrono::duration<double, std::milli> t = std::chrono::steady_clock::now() - t0;
+    d.viewer().keep_frames(true);
+    d.frames(1);  // the frame on screen is read back again
+    return t.count() / n;
+}
+
 }  // namespace
 
 TEST_CASE("gui modes: the mode switch, by click and by the M key", "[modes][gui-events]") {
     Driver d;
     choose(d, "liang-barsky");
     REQUIRE(d.session().study.mode == Mode::Watch);
+    WARN("frame time, Watch (for comparison): " << frame_ms(d) << " ms");
     d.click("mode:Predict");
     CHECK(d.session().study.mode == Mode::Predict);
     d.click("mode:Find the bug");
@@ -143,6 +158,7 @@ TEST_CASE("gui modes: Predict — choose the event, type the numbers, reveal",
     CHECK(p.reached == t.steps.size());
     CHECK(d.drawn("predict summary"));
     shot(d, "predict-summary");
+    WARN("frame time, Predict: " << frame_ms(d) << " ms");
     d.click("wrong step 2");
     CHECK(d.session().index() == 2);
 }
@@ -188,6 +204,7 @@ TEST_CASE("gui modes: Find the bug — the shown working is the tampered one; na
     CHECK(d.drawn("bug verdict right"));
     CHECK_FALSE(d.drawn("Bug answer"));  // the explanation stays until the mode is left
     shot(d, "bug-right");
+    WARN("frame time, Find the bug: " << frame_ms(d) << " ms");
 
     d.click("mode:Watch");
     CHECK(d.session().study.mode == Mode::Watch);
@@ -229,6 +246,7 @@ TEST_CASE("gui modes: Compare — a variant side by side, stepped together", "[m
     CHECK(c.b->index() == std::min(*c.result->first_step, c.result->steps_b));
     CHECK(c.b->last_step()->event != d.session().last_step()->event);
     shot(d, "compare-first-difference");
+    WARN("frame time, phong-lighting side by side: " << frame_ms(d) << " ms");
 
     // Closing returns to one canvas.
     d.click("Compare");
@@ -251,6 +269,7 @@ TEST_CASE("gui modes: Compare — another algorithm on the same input, by the C 
     CHECK(d.drawn("compare verdict"));
     CHECK(d.drawn("compare costs"));
     shot(d, "compare-algorithms");
+    WARN("frame time, z-buffer beside painters: " << frame_ms(d) << " ms");
     d.key(SDLK_c);
     CHECK_FALSE(d.session().comparing());
 }
