@@ -156,3 +156,23 @@ TEST_CASE("session modes: a mode follows the run it studies", "[gui][modes]") {
     CHECK_FALSE(s.set_mode(Mode::Bug));
     CHECK(s.study.mode == Mode::Watch);
 }
+
+TEST_CASE("session modes: every registered algorithm can be predicted, bugged and compared",
+          "[gui][modes]") {
+    cg::viewer::Session s(registry());
+    for (const cg::Algorithm& a : registry().all()) {
+        INFO(a.spec->id);
+        s.choose(a);
+        REQUIRE(s.input_error.empty());
+        CHECK(s.set_mode(Mode::Predict));
+        CHECK(s.set_mode(Mode::Bug));
+        CHECK(s.set_mode(Mode::Watch));
+        const std::vector<cg::viewer::CompareOption> options = s.compare_options();
+        for (int i = 0; i < static_cast<int>(options.size()); ++i) {
+            INFO("side B: " << options[i].label << " (" << s.study.compare.error << ")");
+            CHECK(s.open_compare(i));
+            CHECK(s.comparing());
+            s.close_compare();
+        }
+    }
+}
