@@ -424,8 +424,9 @@ void draw_side(Session& side, Session& owner, const char* name, const std::strin
     const bool parting = result && result->first_step && *result->first_step == owner.index();
     ImGui::PushFont(owner.fonts.bold);
     ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(parting ? kErrorText : kCaptionText));
-    ImGui::TextUnformatted((std::string(name) + "  " + label + "  ·  step " +
-                            std::to_string(side.index()) + (parting ? "  ·  first difference" : ""))
+    // What matters first, for a narrow half: the step and the mark; the label may be cut.
+    ImGui::TextUnformatted((std::string(name) + "  ·  step " + std::to_string(side.index()) +
+                            (parting ? "  ·  first difference" : "") + "  ·  " + label)
                                .c_str());
     ImGui::PopStyleColor();
     ImGui::PopFont();
@@ -462,9 +463,15 @@ void draw_compare_canvases(Session& s, bool interactive) {
 void draw_compare_editor(Session& s) {
     CompareState& c = s.study.compare;
     if (!c.open || !c.editing) return;
-    const ImVec2 d = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(d.x / 2, d.y / 2), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(460, 420), ImGuiCond_Appearing);
+    // Over side B's canvas, its bottom-right corner: side A stays in sight.
+    const Box& canvas = s.canvas_rect;
+    ImGui::SetNextWindowPos(
+        ImVec2(static_cast<float>(canvas.max.x) - 8, static_cast<float>(canvas.max.y) - 8),
+        ImGuiCond_Appearing, ImVec2(1, 1));
+    ImGui::SetNextWindowSize(
+        ImVec2(std::min(420.0f, static_cast<float>(canvas.max.x - canvas.min.x) / 2),
+               std::min(420.0f, static_cast<float>(canvas.max.y - canvas.min.y) - 16)),
+        ImGuiCond_Appearing);
     if (ImGui::Begin("Side B's input", &c.editing,
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
         small_hint(s, "Side B runs the same algorithm on this input. Edit it and Apply.");
