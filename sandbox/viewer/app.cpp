@@ -64,7 +64,35 @@ bool on_key(Session& s, const SDL_KeyboardEvent& key) {
             if (navigating) return false;
             s.step_forward();
             return true;
+        // The study modes (panel_modes.cpp).
+        case SDLK_m:
+            if (!key.repeat) s.cycle_mode();
+            return true;
+        case SDLK_c:
+            if (key.repeat) return true;
+            if (s.study.compare.open)
+                s.close_compare();
+            else
+                s.open_compare(s.study.compare.choice);
+            return true;
+        case SDLK_b:
+            if (s.study.mode != Mode::Bug) return false;
+            if (!key.repeat) s.answer_bug(s.index());
+            return true;
+        case SDLK_RETURN:
+        case SDLK_KP_ENTER:
+            if (navigating || s.study.mode != Mode::Predict) return false;
+            if (!key.repeat) s.reveal_prediction();
+            return true;
         default:
+            // 1 … 9: Predict's choice of the next step's event.
+            if (s.study.mode == Mode::Predict && s.algorithm && key.keysym.sym >= SDLK_1 &&
+                key.keysym.sym <= SDLK_9) {
+                const std::size_t i = static_cast<std::size_t>(key.keysym.sym - SDLK_1);
+                if (i < s.algorithm->spec->events.size())
+                    s.choose_prediction(s.algorithm->spec->events[i].id);
+                return true;
+            }
             return false;
     }
 }
@@ -126,13 +154,18 @@ Viewer::Viewer(const Registry& registry, const std::optional<Checkpoint>& initia
     s.fonts = host_->fonts();
     textures_ = std::make_unique<GridTextures>(host_->gl());
     s.textures = textures_.get();
+    compare_textures_ = std::make_unique<GridTextures>(host_->gl());
+    s.compare_textures = compare_textures_.get();
     ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
     last_ = SDL_GetPerformanceCounter();
 }
 
 Viewer::~Viewer() {
+    session_->close_compare();  // side B draws with compare_textures_
     session_->textures = nullptr;
+    session_->compare_textures = nullptr;
     textures_.reset();  // while the GL context is still there
+    compare_textures_.reset();
 }
 
 SDL_Window* Viewer::window() const { return host_->window(); }

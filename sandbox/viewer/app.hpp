@@ -55,6 +55,7 @@ class Viewer {
     std::unique_ptr<Session> session_;
     std::unique_ptr<GuiHost> host_;
     std::unique_ptr<GridTextures> textures_;  // before host_ goes: it needs the GL context
+    std::unique_ptr<GridTextures> compare_textures_;  // Compare's side B's
     EventFeed feed_;
     int busy_frames_ = 3;  // redraw a few frames after any event, so hover effects settle
     std::uint64_t last_ = 0;

@@ -171,18 +171,20 @@ struct Caption {
 
 Caption make_caption_box(Caption c, const ScreenMap& map, const Fonts& f);
 
-Caption make_caption(const ScreenMap& map, const Session& s, bool interactive) {
+Caption make_caption(const ScreenMap& map, Session& s, bool interactive) {
     Caption c;
     if (!s.algorithm) return c;
     c.title = s.algorithm->spec->title;
     const std::optional<std::size_t> n = s.length();
     c.detail = "step " + std::to_string(s.index()) + " / " + (n ? std::to_string(*n) : "?");
-    if (const StepInfo* info = s.last_step(); info && !info->event.empty())
+    if (const StepInfo* info = s.shown_step(); info && !info->event.empty())
         c.detail += "  ·  " + info->event;
     if (!s.input_error.empty()) c.detail += "  ·  input refused: showing the last good run";
     if (s.solution_hidden())  // its length would hint at the answer
         c.detail = "exam problem " + std::to_string(s.exam.problem.seed) + "  ·  solution hidden";
-    if (interactive) c.hint = "wheel: zoom  ·  right-drag: pan  ·  drag ■ to edit the input";
+    // (Not on a narrow canvas, half of Compare's: it would run past the edge.)
+    if (interactive && map.canvas.max.x - map.canvas.min.x >= 560)
+        c.hint = "wheel: zoom  ·  right-drag: pan  ·  drag ■ to edit the input";
     return make_caption_box(c, map, s.fonts);
 }
 
@@ -259,7 +261,7 @@ void draw_canvas3d(Session& s, const Box& box, bool interactive) {
     // (The background is the frame's clear colour, as for the 2D canvas.)
     ScreenMap map{box, s.canvas.view};
     Caption caption = make_caption(map, s, false);
-    if (interactive)
+    if (interactive && box.max.x - box.min.x >= 560)
         caption.hint = "drag: orbit (arcball)  ·  right-drag: pan  ·  wheel: zoom  ·  double-click: reset";
     caption = make_caption_box(caption, map, s.fonts);
     draw_scene3(dl, Projector{box, camera.view}, scene, s.fonts, {caption.box.grown(4)});

@@ -94,7 +94,7 @@ float pseudocode_height(Session& s, float panel_width) {
 void draw_pseudocode_panel(Session& s) {
     if (!s.algorithm) return;
     const std::vector<std::string>& lines = s.algorithm->spec->pseudocode;
-    const int active = s.last_step() ? s.last_step()->line : 0;
+    const int active = s.shown_step() ? s.shown_step()->line : 0;
 
     ImGui::PushFont(s.fonts.mono);
     const float row_height = ImGui::GetTextLineHeightWithSpacing();
@@ -155,7 +155,7 @@ void draw_pseudocode_panel(Session& s) {
 }
 
 void draw_variables_panel(Session& s) {
-    const StepInfo* info = s.last_step();
+    const StepInfo* info = s.shown_step();  // Find the bug: the planted working
     if (!info) {
         ImGui::TextDisabled("No step taken yet.");
         return;
@@ -184,7 +184,7 @@ void draw_variables_panel(Session& s) {
 
 void draw_events_panel(Session& s) {
     if (!s.algorithm) return;
-    const std::string current = s.last_step() ? s.last_step()->event : "";
+    const std::string current = s.shown_step() ? s.shown_step()->event : "";
     const ImGuiTableFlags flags = ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingStretchProp;
     if (!ImGui::BeginTable("events", 2, flags)) return;
     ImGui::TableSetupColumn("event", ImGuiTableColumnFlags_WidthFixed);

@@ -114,6 +114,7 @@ void draw_note(Session& s, const std::string& text) {
 
 // What the current step did: the narration, its formula, and what the lesson says about it.
 void draw_now(Session& s) {
+    if (draw_mode_now(s)) return;
     ImGui::PushFont(s.fonts.large);
     const StepInfo* info = s.last_step();
     if (s.solution_hidden()) {
@@ -160,9 +161,12 @@ void draw_log(Session& s, float height) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     for (std::size_t i = 0; i < log.steps.size(); ++i) {
         const std::size_t step = log.first + i;
-        const std::string text =
-            wrap_at_spaces(ImGui::GetFont(), ImGui::GetFontSize(),
-                           std::to_string(step) + ".  " + log.steps[i].narration, wrap);
+        // Find the bug hides the narration: the event stands for it.
+        const StepInfo& entry = log.steps[i];
+        const std::string said =
+            entry.narration.empty() ? "(" + entry.event + ")" : entry.narration;
+        const std::string text = wrap_at_spaces(ImGui::GetFont(), ImGui::GetFontSize(),
+                                                std::to_string(step) + ".  " + said, wrap);
         const ImVec2 size = ImGui::CalcTextSize(text.c_str());
         ImGui::PushID(static_cast<int>(i));
         const ImVec2 at = ImGui::GetCursorScreenPos();
@@ -183,6 +187,7 @@ void draw_log(Session& s, float height) {
 
 void draw_controls_panel(Session& s) {
     draw_stepping(s);
+    draw_modes_row(s);  // after the stepping row: Tab, then → and Space, reach Back first
     // The files row's height is last frame's: it wraps onto more rows in a narrow window.
     const float files = s.files_height > 0 ? s.files_height : ImGui::GetFrameHeightWithSpacing();
     const float spacing = ImGui::GetStyle().ItemSpacing.y;

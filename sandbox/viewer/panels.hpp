@@ -28,4 +28,12 @@ void draw_events_panel(Session& s);
 void draw_controls_panel(Session& s);
 void draw_files_row(Session& s);  // its last row (panel_files.cpp)
 
+// The study modes (panel_modes.cpp): the mode switch and Compare at the top of the Step panel;
+// the mode's own controls in place of the narration (false: Watch, nothing drawn); the two
+// canvases side by side while comparing; the editor of side B's input.
+void draw_modes_row(Session& s);
+bool draw_mode_now(Session& s);
+void draw_compare_canvases(Session& s, bool interactive);
+void draw_compare_editor(Session& s);
+
 }  // namespace cg::viewer

@@ -160,13 +160,19 @@ const Scene& Session::scene() const {
 }
 
 const NarrationLog& Session::log() {
-    if (log_.run == run_id && log_.index == index()) return log_;
+    if (log_.run == run_id && log_.index == index() && log_generation_ == study.generation)
+        return log_;
     log_.run = run_id;
+    log_generation_ = study.generation;
     log_.index = index();
     log_.first =
         log_.index > NarrationLog::kMaxEntries ? log_.index - NarrationLog::kMaxEntries + 1 : 1;
     log_.steps.clear();
     if (timeline && log_.index > 0) log_.steps = timeline->steps(log_.first, log_.index);
+    // Find the bug: the planted working in place of the real one.
+    if (study.mode == Mode::Bug && study.bug.bug)
+        for (std::size_t i = 0; i < log_.steps.size(); ++i)
+            if (const StepInfo* shown = shown_step(log_.first + i)) log_.steps[i] = *shown;
     return log_;
 }
 
@@ -181,7 +187,12 @@ bool Session::on_breakpoint() {
 
 void Session::step_forward() {
     playing = false;
-    if (can_step()) timeline->forward();
+    if (!can_step()) return;
+    if (forward_locked(index() + 1) && !timeline->at_end()) {
+        set_status("Predict the next step first: choose its event, then Reveal (Enter).", false);
+        return;
+    }
+    timeline->forward();
 }
 
 void Session::step_back() {
@@ -196,12 +207,19 @@ void Session::reset() {
 
 void Session::jump(std::size_t step) {
     playing = false;
-    if (can_step()) timeline->jump(step);
+    if (!can_step()) return;
+    if (study.mode == Mode::Predict)
+        step = std::min(step, std::max(index(), study.predict.reached));
+    timeline->jump(step);
 }
 
 void Session::run_to_end() {
     playing = false;
     if (!can_step()) return;
+    if (study.mode == Mode::Predict) {  // only as far as has been revealed
+        jump(study.predict.reached);
+        return;
+    }
     if (breakpoints.empty()) {
         timeline->to_end();
         return;
@@ -227,7 +245,7 @@ void Session::advance(double seconds) {
     play_clock = std::min(play_clock + seconds * steps_per_second, 3.0);
     while (play_clock >= 1) {
         play_clock -= 1;
-        if (!timeline->forward() || on_breakpoint()) {
+        if (forward_locked(index() + 1) || !timeline->forward() || on_breakpoint()) {
             playing = false;
             break;
         }

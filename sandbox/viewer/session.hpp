@@ -26,6 +26,9 @@
 #include "hsr/complexity.hpp"
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
+#include "study/bug.hpp"
+#include "study/compare.hpp"
+#include "study/predict.hpp"
 #include "viewer/fonts.hpp"
 #include "viewer/geometry.hpp"
 #include "viewer/view3.hpp"
@@ -65,6 +68,61 @@ struct ExamState {
 };
 
 class GridTextures;
+struct Session;
+
+// The study modes (docs/study-modes.md) on top of a run: Watch (free stepping), Predict (each
+// step predicted before it is shown) and Find the bug (the run's working with one planted
+// mistake); beside any of them, Compare opens a second run next to the first. The logic is in
+// session_modes.cpp, the drawing in panel_modes.cpp.
+enum class Mode { Watch, Predict, Bug };
+
+struct PredictState {
+    std::string event;               // the event chosen for the next step ("" before a choice)
+    std::vector<std::string> typed;  // the numbers typed, one per predictable_vars(event)
+    std::size_t reached = 0;         // steps revealed so far: forward is free up to here
+    std::vector<study::PredictGrade> grades;  // one per step predicted, in step order
+    std::size_t right = 0;
+};
+
+struct BugState {
+    std::uint64_t seed = 1;                // the seed field
+    std::optional<study::PlantedBug> bug;  // the bug planted in this run
+    std::optional<study::BugGrade> grade;  // the last answer's verdict
+    std::size_t answered_step = 0;         // the step that answer named
+    bool over = false;  // answered right, or given up: the explanation stays until leaving
+};
+
+// One choice for Compare's side B.
+struct CompareOption {
+    enum class Kind { Variant, Algorithm, Edited } kind = Kind::Variant;
+    std::string label;                     // what the list shows
+    const Algorithm* algorithm = nullptr;  // side B's algorithm
+    const Variant* variant = nullptr;      // Kind::Variant: the variant applied to B's input
+};
+
+struct CompareState {
+    bool open = false;
+    int choice = 0;              // index into Session::compare_options()
+    std::string edited_text;     // Kind::Edited: side B's input as JSON text
+    bool editing = false;        // the editor window for edited_text is shown
+    std::string error;           // why side B did not start
+    std::shared_ptr<Session> b;  // side B: a session of its own, stepped with this one
+    study::Side side_a, side_b;
+    std::optional<study::Comparison> result;  // of the two recorded runs, made once per pair
+    std::uint64_t run_a = std::numeric_limits<std::uint64_t>::max();  // the runs it is for
+    std::uint64_t run_b = std::numeric_limits<std::uint64_t>::max();
+    std::size_t synced = std::numeric_limits<std::size_t>::max();  // A's step B was moved to
+};
+
+struct StudyState {
+    Mode mode = Mode::Watch;
+    std::shared_ptr<const study::Trace> trace;  // the run's, recorded once when needed
+    std::uint64_t trace_run = std::numeric_limits<std::uint64_t>::max();  // ... for this run
+    std::uint64_t generation = 0;  // counts changes to the steps shown (a bug planted or left)
+    PredictState predict;
+    BugState bug;
+    CompareState compare;
+};
 
 struct Session {
     explicit Session(const Registry& r) : registry(r) {}
@@ -96,6 +154,7 @@ struct Session {
     std::string preset;     // the lesson preset last loaded (it counts while the input equals it)
     bool browsing = false;  // the Lessons tab lists the lessons although one is open
     ExamState exam;
+    StudyState study;
     std::vector<hsr::ComplexityRow> hsr_costs;  // the costs plot's table, made when first opened
     std::vector<accel::ComplexityRow> accel_costs;  // the same for the acceleration structures
     Tab tab = Tab::Algorithm;    // the tab shown (what the tab bar shows, or is about to)
@@ -163,6 +222,41 @@ struct Session {
     void leave_exam();
     bool solution_hidden() const { return exam.active && !exam.revealed; }
 
+    // --- study modes (session_modes.cpp) ---
+    // Switches mode; Predict and Find the bug record the run first (a refusal, say a run too
+    // long to keep, goes to the status line and the mode stays Watch). Returns false then.
+    bool set_mode(Mode m);
+    void cycle_mode();            // Watch → Predict → Find the bug → Watch (the M key)
+    const study::Trace* trace();  // the current run's, recorded once per run; null if refused
+    // Every frame: re-enters the mode when the run changed under it (an edit, a dragged
+    // handle), and keeps Compare's side B on this run's step.
+    void sync_study();
+    // The step the panels show for step k (1-based): the planted bug's working in Find the
+    // bug, else the real step. Null for step 0.
+    const StepInfo* shown_step(std::size_t k);
+    const StepInfo* shown_step() { return shown_step(index()); }
+    // Predict: the numbers the chosen event asks for; Reveal grades the prediction against
+    // the true next step and takes it. False when there is nothing to predict now.
+    const std::vector<std::string>& predict_vars() const;
+    void choose_prediction(const std::string& event);
+    bool can_predict() const;  // at the furthest step revealed, with a step still to come
+    bool reveal_prediction();
+    bool forward_locked(std::size_t to) const;  // Predict: `to` is past what has been revealed
+    // Find the bug: plants bug.seed's bug (the run from step 0); names `step` as the first
+    // wrong one; gives up (the explanation is shown).
+    bool plant_bug();
+    void answer_bug(std::size_t step);
+    void give_up_bug();
+    // Compare: the choices for side B, opening it beside this run, closing it.
+    std::vector<CompareOption> compare_options() const;
+    const Variant* input_variant() const;  // the variant the input is in, if any
+    bool open_compare(int choice);
+    void close_compare();
+    bool comparing() const {
+        return study.compare.open && study.compare.b && study.compare.b->timeline;
+    }
+    GridTextures* compare_textures = nullptr;  // side B's grid textures (its own slots)
+
     // --- moving (each does nothing without a run, or while an exam's solution is hidden) ---
     void step_forward();
     void step_back();
@@ -181,6 +275,7 @@ struct Session {
     bool can_step() const { return timeline && !solution_hidden(); }
 
     NarrationLog log_;
+    std::uint64_t log_generation_ = 0;
     mutable Scene scene_;  // scene()'s, for the step it was drawn at
     mutable std::uint64_t scene_run_ = std::numeric_limits<std::uint64_t>::max();
     mutable std::size_t scene_index_ = 0;

@@ -120,6 +120,11 @@ void draw_help(Session& s, ImVec2 display) {
         {"Home", "back to step 0"},
         {"End", "run to the end (stops at a breakpoint)"},
         {"P", "play / pause"},
+        {"M", "next mode: Watch, Predict, Find the bug"},
+        {"1 … 9", "Predict: choose the next step's event"},
+        {"Enter", "Predict: reveal the step and grade the prediction"},
+        {"B", "Find the bug: this step is the first wrong one"},
+        {"C", "Compare: open or close the second run"},
         {"Tab  /  Shift-Tab", "move the keyboard to the next / previous panel"},
         {"↑ ↓ ← →  (in a panel)", "move between its controls"},
         {"Space  or  Enter", "press the control, or edit the field"},
@@ -184,7 +189,12 @@ void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
     panel(s, "Canvas", pos, size,
           ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
               ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground,
-          [&] { draw_canvas(s, interactive); });
+          [&] {
+              if (s.comparing())
+                  draw_compare_canvases(s, interactive);
+              else
+                  draw_canvas(s, interactive);
+          });
     ImGui::PopStyleVar(2);
 }
 
@@ -192,6 +202,7 @@ void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
 
 void draw_ui(Session& s, ImVec2 display, bool full_ui, bool interactive) {
     if (s.record_widgets) s.widgets.clear();  // what this frame draws, no older
+    s.sync_study();
     if (!full_ui) {
         canvas_window(s, ImVec2(0, 0), display, interactive);
         return;
@@ -208,6 +219,7 @@ void draw_ui(Session& s, ImVec2 display, bool full_ui, bool interactive) {
     panel(s, "Pseudocode", l.code_pos, l.code_size, 0, [&] { draw_pseudocode_panel(s); });
     panel(s, "Variables", l.vars_pos, l.vars_size, 0, [&] { draw_variables_panel(s); });
     panel(s, "Events", l.events_pos, l.events_size, 0, [&] { draw_events_panel(s); });
+    draw_compare_editor(s);
     draw_help(s, display);
 }
 
