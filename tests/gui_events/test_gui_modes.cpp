@@ -163,7 +163,7 @@ TEST_CASE("gui modes: Predict — choose the event, type the numbers, reveal",
     CHECK(d.session().index() == 2);
 }
 
-TEST_CASE("gui modes: Find the bug — the shown working is the tampered one; name the step",
+TEST_CASE("gui modes: Find the bug — the shown working is the tampered one, then name the step",
           "[modes][gui-events]") {
     Driver d;
     const cg::Algorithm& a = algorithm("liang-barsky");
