@@ -273,14 +273,13 @@ void ProjectiveShadow::advance(State& s) {
         case Phase::Matrix:
             s.m = shadow_matrix(s.plane, in.light);
             s.shadow.reserve(in.polygon.size());
-            s.cases.reserve(in.polygon.size());
             s.phase = Phase::Vertex;
             return;
         case Phase::Vertex: {
             ++s.k;
             dvec4 image;
             dvec3 shadow;
-            s.cases.push_back(classify(s.plane, s.m, in.polygon[s.k], image, shadow));
+            s.cases[s.k] = classify(s.plane, s.m, in.polygon[s.k], image, shadow);
             s.shadow.push_back(shadow);
             if (std::size_t(s.k) + 1 == in.polygon.size()) s.phase = Phase::Polygon;
             return;
@@ -433,12 +432,12 @@ void narrate_polygon(const State& s, StepInfo& info) {
     info.line = kLinePolygon;
     std::string pts;
     int valid = 0;
-    for (std::size_t k = 0; k < s.cases.size(); ++k) {
+    for (std::size_t k = 0; k < s.shadow.size(); ++k) {
         const bool ok = s.cases[k] == Case::Shadow || s.cases[k] == Case::OnPlane;
         valid += ok;
         pts += (k ? ", " : "") + (ok ? num(s.shadow[k], 4) : std::string("none"));
     }
-    const int n = int(s.cases.size());
+    const int n = int(s.shadow.size());
     info.narration =
         "The shadow polygon: " + pts + ". " +
         (valid == n ? "Every vertex casts a shadow: this flattened copy, drawn dark on the "
@@ -471,7 +470,7 @@ void fill_vars(const State& s, StepInfo& info) {
     }
     if (s.last == Phase::Polygon) {
         std::vector<std::vector<double>> pts;
-        for (std::size_t k = 0; k < s.cases.size(); ++k)
+        for (std::size_t k = 0; k < s.shadow.size(); ++k)
             if (s.cases[k] == Case::Shadow || s.cases[k] == Case::OnPlane)
                 pts.push_back(vec3(s.shadow[k]));
         info.vars.push_back({"shadow", pts});
@@ -513,8 +512,20 @@ ProjectiveShadow::Result ProjectiveShadow::result(const State& s) {
     r.matrix = s.m;
     r.flipped = s.flipped;
     r.shadow = s.shadow;
-    r.valid.reserve(s.cases.size());
-    for (Case c : s.cases) r.valid.push_back(c == Case::Shadow || c == Case::OnPlane);
+    r.valid.resize(s.shadow.size());
+    for (std::size_t k = 0; k < s.shadow.size(); ++k)
+        r.valid[k] = s.cases[k] == Case::Shadow || s.cases[k] == Case::OnPlane;
+    return r;
+}
+
+ProjectiveShadow::Result ProjectiveShadow::result(State&& s) {
+    Result r;
+    r.matrix = s.m;
+    r.flipped = s.flipped;
+    r.valid.resize(s.shadow.size());
+    for (std::size_t k = 0; k < s.shadow.size(); ++k)
+        r.valid[k] = s.cases[k] == Case::Shadow || s.cases[k] == Case::OnPlane;
+    r.shadow = std::move(s.shadow);
     return r;
 }
 
@@ -542,26 +553,32 @@ void ProjectiveShadow::draw(const State& s, Scene& scene) {
     const Input& in = *s.in;
     const bool started = s.phase != Phase::Setup;
     const Oriented o = started ? Oriented{s.plane, s.h_light, s.flipped} : orient(in);
+    // The unit normal and the signed distance, scaled first by n's largest component so that
+    // nothing over- or underflows.
     const dvec3 n(o.plane);
-    const double nn = glm::dot(n, n);
+    const double big = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
+    const dvec3 ns = n / big;
+    const double len = glm::length(ns);
+    const dvec3 un = ns / len;
     const bool sun = directional(in);
     const dvec3 L(in.light);
-    auto foot = [&](const dvec3& p) { return p - (glm::dot(n, p) + o.plane.w) / nn * n; };
+    auto foot = [&](const dvec3& p) {
+        return p - ((glm::dot(ns, p) + o.plane.w / big) / len) * un;
+    };
 
     // The plane's quad: a frame (u, v) in it, covering the feet of the polygon, its shadow
     // points and (for a point light) the light's foot, with a margin.
-    const dvec3 un = n / std::sqrt(nn);
     const dvec3 a = std::fabs(un.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
     const dvec3 u = glm::normalize(glm::cross(un, a)), v = glm::cross(un, u);
     std::vector<dvec3> cover;
     for (const dvec3& p : in.polygon) cover.push_back(foot(p));
-    for (std::size_t k = 0; k < s.cases.size(); ++k)
+    for (std::size_t k = 0; k < s.shadow.size(); ++k)
         if (s.cases[k] == Case::Shadow) cover.push_back(s.shadow[k]);
     if (!sun) cover.push_back(foot(L));
     {  // the anti-shadows and false shadows the matrix gives, when not too far off
         double reach = 0;
         for (const dvec3& c : cover) reach = std::max(reach, glm::length(c - cover.front()));
-        for (std::size_t k = 0; k < s.cases.size(); ++k)
+        for (std::size_t k = 0; k < s.shadow.size(); ++k)
             if ((s.cases[k] == Case::AboveLight || s.cases[k] == Case::BehindPlane) &&
                 glm::length(s.shadow[k] - cover.front()) <= 3 * reach + 1)
                 cover.push_back(s.shadow[k]);
@@ -611,7 +628,7 @@ void ProjectiveShadow::draw(const State& s, Scene& scene) {
     }
 
     // Rays through the vertices done so far, and the shadow points.
-    for (std::size_t k = 0; k < s.cases.size(); ++k) {
+    for (std::size_t k = 0; k < s.shadow.size(); ++k) {
         const dvec3 p = in.polygon[k];
         const bool now = s.last == Phase::Vertex && int(k) == s.k;
         const dvec3 src = sun ? p + ldir * 0.6 * size : L;
@@ -649,13 +666,13 @@ void ProjectiveShadow::draw(const State& s, Scene& scene) {
     // The shadow polygon, once every vertex is done and all cast one.
     if (s.phase == Phase::Done || s.last == Phase::Polygon) {
         std::vector<dvec3> pts;
-        for (std::size_t k = 0; k < s.cases.size(); ++k)
+        for (std::size_t k = 0; k < s.shadow.size(); ++k)
             if (s.cases[k] == Case::Shadow || s.cases[k] == Case::OnPlane)
                 pts.push_back(s.shadow[k]);
         if (pts.size() >= 3)
             scene.faces3.push_back({pts, {Role::Neutral, 2.0f, false, 0x202020ffu}, 0.75f});
-    } else if (s.cases.size() >= 2) {
-        for (std::size_t k = 1; k < s.cases.size(); ++k) {
+    } else if (s.shadow.size() >= 2) {
+        for (std::size_t k = 1; k < s.shadow.size(); ++k) {
             const bool a_ok = s.cases[k - 1] == Case::Shadow || s.cases[k - 1] == Case::OnPlane;
             const bool b_ok = s.cases[k] == Case::Shadow || s.cases[k] == Case::OnPlane;
             if (a_ok && b_ok)
@@ -666,6 +683,16 @@ void ProjectiveShadow::draw(const State& s, Scene& scene) {
                                            false});
         }
     }
+    // Inputs near the limits of a double (coordinates of 1e300) leave nothing worth drawing
+    // where the picture's own arithmetic overflows: such primitives are left out.
+    std::erase_if(scene.faces3, [](const Face3& f) {
+        return std::any_of(f.points.begin(), f.points.end(),
+                           [](const dvec3& q) { return !finite3(q); });
+    });
+    std::erase_if(scene.segments3,
+                  [](const Segment3& g) { return !finite3(g.a) || !finite3(g.b); });
+    std::erase_if(scene.points3, [](const Point3& q) { return !finite3(q.p); });
+    std::erase_if(scene.labels3, [](const Label3& q) { return !finite3(q.p); });
 }
 
 }  // namespace cg

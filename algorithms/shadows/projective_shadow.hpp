@@ -39,6 +39,7 @@
 // one of the cases above), then polygon (the shadow polygon).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -92,9 +93,9 @@ struct ProjectiveShadow {
         double h_light = 0;            // P · L
         bool flipped = false;
         glm::dmat4 m{1.0};
-        int k = -1;                      // the vertex done last
-        std::vector<glm::dvec3> shadow;  // s = p'/w' (or p, or the matrix's point)
-        std::vector<Case> cases;
+        int k = -1;                              // the vertex done last
+        std::vector<glm::dvec3> shadow;          // s = p'/w' (or p, or the matrix's point)
+        std::array<Case, kMaxVertices> cases{};  // per vertex done (a fixed array: no allocation)
         bool operator==(const State&) const = default;
     };
 
@@ -104,6 +105,7 @@ struct ProjectiveShadow {
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
+    static Result result(State&& s);  // moves the shadow points out (run_to_end)
     static void draw(const State& s, Scene& scene);
 
     static Input exam_input(Rng& rng);
