@@ -320,7 +320,7 @@ TEST_CASE(
     CHECK(exact_cases == 2000);
 }
 
-TEST_CASE("projective-shadow: replay on the example and the presets; run-to-end is flatten",
+TEST_CASE("projective-shadow: replay on the example and the presets, run-to-end is flatten",
           "[shadows][projective-shadow]") {
     const cg::Algorithm& a = cg::test::algorithm("projective-shadow");
     cg::test::check_replay(a, a.example(), cg::test::kEveryStep);

@@ -231,7 +231,8 @@ TEST_CASE("slerp: the naive methods' in-between matrices agree with GLM's, slerp
     }
     CHECK(smallest_det < 0.5);  // the matrix blend shrinks: no rotation in between
     // The method is read, and named on error.
-    const cg::Algorithm& a = *cg::builtin_registry().find("slerp");
+    const cg::Registry registry = cg::builtin_registry();
+    const cg::Algorithm& a = *registry.find("slerp");
     cg::json in = a.example();
     in["method"] = "nlerp";
     CHECK_THROWS_WITH(a.create(in), Catch::Contains("method") && Catch::Contains("euler-lerp"));
