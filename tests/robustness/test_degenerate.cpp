@@ -197,7 +197,11 @@ TEST_CASE("robustness: NaN and infinities in every numeric field are refused, na
         if (!a) continue;
         const json base = base_of(t);
         const auto leaves = cg::test::numeric_leaves(base);
-        REQUIRE(!leaves.empty());
+        // Only an input made of text has no number to sweep: affine-combination's numbers are
+        // inside its expressions (its table has the NaN, overflow and magnitude rows).
+        CAPTURE(t.id);
+        if (t.id == "affine-combination") CHECK(leaves.empty());
+        else REQUIRE(!leaves.empty());
         for (std::size_t k = 0; k < leaves.size(); ++k)
             for (const char* raw : {"NaN", "1e999", "-1e999"}) {
                 const auto& leaf = leaves[k];
