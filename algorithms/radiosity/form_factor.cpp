@@ -78,7 +78,8 @@ std::string formula_tex(const ff::Analytic& an) {
                    "Y\\tan^{-1}Y\\Big],\\; X = a/c,\\, Y = b/c";
         case ff::Case::PerpendicularRectangles:
             return "F = \\frac{1}{\\pi W}\\Big[W\\tan^{-1}\\tfrac1W + H\\tan^{-1}\\tfrac1H - "
-                   "\\sqrt{H^2+W^2}\\tan^{-1}\\tfrac{1}{\\sqrt{H^2+W^2}} + \\tfrac14\\ln\\{\\dots\\}"
+                   "\\sqrt{H^2+W^2}\\tan^{-1}\\tfrac{1}{\\sqrt{H^2+W^2}} + "
+                   "\\tfrac14\\ln\\{\\dots\\}"
                    "\\Big],\\; W = w/l,\\, H = h/l";
         case ff::Case::CoaxialDiscs:
             return "F = \\tfrac12\\big(X - \\sqrt{X^2 - 4(R_2/R_1)^2}\\big),\\; X = 1 + "
@@ -167,10 +168,10 @@ void FormFactor::validate(const Input& in) {
     for (std::size_t k = 0; k < in.enclosure.size(); ++k)
         validate_patch(in.enclosure[k], "enclosure[" + std::to_string(k) + "]", false);
     if (in.resolution < 2 || in.resolution > kMaxResolution || in.resolution % 2)
-        throw InputError("hemicube.resolution",
-                         "must be an even number of cells from 2 to " +
-                             std::to_string(kMaxResolution) + " (got " +
-                             std::to_string(in.resolution) + "): the side faces are R/2 tall");
+        throw InputError("hemicube.resolution", "must be an even number of cells from 2 to " +
+                                                    std::to_string(kMaxResolution) + " (got " +
+                                                    std::to_string(in.resolution) +
+                                                    "): the side faces are R/2 tall");
     if (in.samples < 1 || in.samples > kMaxSamples)
         throw InputError("hemicube.samples", "must be from 1 to " + std::to_string(kMaxSamples) +
                                                  " (got " + std::to_string(in.samples) + ")");
@@ -180,8 +181,8 @@ void FormFactor::validate(const Input& in) {
     if (!is_point(in)) {
         const double ratio = area(in.from) / area(in.to);
         if (!std::isfinite(ratio) || !(ratio > 0) || !std::isfinite(1 / ratio))
-            throw InputError("to", "the areas A_i = " + num(area(in.from)) + " and A_j = " +
-                                       num(area(in.to)) +
+            throw InputError("to", "the areas A_i = " + num(area(in.from)) +
+                                       " and A_j = " + num(area(in.to)) +
                                        " differ too much for A_i / A_j to be a double");
     }
 }
@@ -265,8 +266,8 @@ void FormFactor::advance(State& s) {
             double sum = 0;
             ff::hemicube_face(in.from, points, &in.to, 1, in.resolution, s.face, &sum, &s.coverage);
             s.face_sum = sum;
-            s.face_covered = int(std::count_if(s.coverage.begin(), s.coverage.end(),
-                                               [](float c) { return c > 0; }));
+            s.face_covered = int(
+                std::count_if(s.coverage.begin(), s.coverage.end(), [](float c) { return c > 0; }));
             s.hemicube += sum;
             if (s.face + 1 == ff::kFaces) s.phase = Phase::MonteCarlo;
             return;
@@ -281,13 +282,12 @@ void FormFactor::advance(State& s) {
             s.rays_done += n;
             ++s.batch;
             if (s.batch == kBatches)
-                s.phase = is_point(in)        ? (in.enclosure.empty() ? Phase::Done : Phase::RowSum)
-                          : Phase::Reciprocity;
+                s.phase = is_point(in) ? (in.enclosure.empty() ? Phase::Done : Phase::RowSum)
+                                       : Phase::Reciprocity;
             return;
         }
         case Phase::Reciprocity:
-            s.reciprocity =
-                reciprocity(in, s.an, s.hemicube, double(s.hits) / double(s.rays_done));
+            s.reciprocity = reciprocity(in, s.an, s.hemicube, double(s.hits) / double(s.rays_done));
             s.phase = in.enclosure.empty() ? Phase::Done : Phase::RowSum;
             return;
         case Phase::RowSum:
@@ -344,9 +344,8 @@ void narrate_analytic(const State& s, StepInfo& info) {
     }
     info.event = "analytic";
     info.line = kLineAnalytic;
-    info.narration = "The case is " + case_text(s.an) + ": F_ij = " + num(s.an.value, 6) +
-                     ". So " + num(100 * s.an.value, 4) +
-                     "% of the energy leaving i diffusely arrives at j.";
+    info.narration = "The case is " + case_text(s.an) + ": F_ij = " + num(s.an.value, 6) + ". So " +
+                     num(100 * s.an.value, 4) + "% of the energy leaving i diffusely arrives at j.";
     info.math = formula_tex(s.an) + " = " + tex(s.an.value, 6);
 }
 
@@ -360,21 +359,23 @@ void narrate_face(const State& s, StepInfo& info) {
     const std::string where = pts == 1 ? "the hemicube at i's centre"
                                        : "the hemicubes on " + std::to_string(pts) +
                                              " equal-area points of i (their mean)";
-    info.narration =
-        "The " + std::string(ff::face_name(s.face)) + " face (" + std::to_string(cells) +
-        " cells of ΔA = " + num(w * w, 4) + "): j is seen through " +
-        std::to_string(s.face_covered) + " of them from " + where + "; their ΔF sum to " +
-        num(s.face_sum, 6) + ". Running hemicube sum F_h = " + num(s.hemicube, 6) +
-        (s.face + 1 == ff::kFaces
-             ? (s.an.kase != ff::Case::None
-                    ? " — done; the analytic F_ij = " + num(s.an.value, 6) + ", error " +
-                          num(std::fabs(s.hemicube - s.an.value), 3) + "."
-                    : " — done.")
-             : ".");
+    info.narration = "The " + std::string(ff::face_name(s.face)) + " face (" +
+                     std::to_string(cells) + " cells of ΔA = " + num(w * w, 4) +
+                     "): j is seen through " + std::to_string(s.face_covered) + " of them from " +
+                     where + "; their ΔF sum to " + num(s.face_sum, 6) +
+                     ". Running hemicube sum F_h = " + num(s.hemicube, 6) +
+                     (s.face + 1 == ff::kFaces
+                          ? (s.an.kase != ff::Case::None
+                                 ? " — done; the analytic F_ij = " + num(s.an.value, 6) +
+                                       ", error " + num(std::fabs(s.hemicube - s.an.value), 3) + "."
+                                 : " — done.")
+                          : ".");
     info.math = s.face == 0 ? "\\Delta F = \\frac{\\Delta A}{\\pi (x^2 + y^2 + 1)^2},\\; "
-                              "\\sum_{top} \\Delta F = " + tex(s.face_sum, 6)
+                              "\\sum_{top} \\Delta F = " +
+                                  tex(s.face_sum, 6)
                             : "\\Delta F = \\frac{z\\,\\Delta A}{\\pi (y^2 + z^2 + 1)^2},\\; "
-                              "\\sum_{side} \\Delta F = " + tex(s.face_sum, 6);
+                              "\\sum_{side} \\Delta F = " +
+                                  tex(s.face_sum, 6);
 }
 
 void narrate_batch(const State& s, StepInfo& info) {
@@ -392,10 +393,10 @@ void narrate_batch(const State& s, StepInfo& info) {
     }
     info.narration = "Batch " + std::to_string(s.batch) + ": " + std::to_string(n) +
                      " cosine-distributed rays from uniform points of i, " +
-                     std::to_string(s.batch_hits) + " reach j. So far N_ij = " +
-                     std::to_string(s.hits) + " of N_i = " + std::to_string(s.rays_done) +
-                     ": F_mc = " + num(f, 6) + ", standard error sqrt(F(1−F)/N) = " + num(se, 3) +
-                     "." + cmp;
+                     std::to_string(s.batch_hits) +
+                     " reach j. So far N_ij = " + std::to_string(s.hits) +
+                     " of N_i = " + std::to_string(s.rays_done) + ": F_mc = " + num(f, 6) +
+                     ", standard error sqrt(F(1−F)/N) = " + num(se, 3) + "." + cmp;
     info.math = "F_{mc} = \\frac{N_{ij}}{N_i} = \\frac{" + std::to_string(s.hits) + "}{" +
                 std::to_string(s.rays_done) + "} = " + tex(f, 6) +
                 ",\\; \\sigma = \\sqrt{F(1-F)/N} = " + tex(se, 3);
@@ -409,12 +410,13 @@ void narrate_reciprocity(const State& s, StepInfo& info) {
     const double ai = area(in.from), aj = area(in.to);
     info.narration =
         "Reciprocity A_i F_ij = A_j F_ji: A_i F_ij = " + num(ai, 6) + " × " +
-        num(r.a_i_f_ij / ai, 6) + " = " + num(r.a_i_f_ij, 6) + ", so F_ji = A_i F_ij / A_j = " +
-        num(r.f_ji_expected, 6) + ". Computed in reverse (from j to i): " +
+        num(r.a_i_f_ij / ai, 6) + " = " + num(r.a_i_f_ij, 6) +
+        ", so F_ji = A_i F_ij / A_j = " + num(r.f_ji_expected, 6) +
+        ". Computed in reverse (from j to i): " +
         (r.f_ji_analytic ? "analytic " + num(*r.f_ji_analytic, 6) + ", " : std::string()) +
         "hemicube " + num(r.f_ji_hemicube, 6) + ", Monte Carlo " + num(r.f_ji_monte_carlo, 6) +
-        " (±" + num(ff::std_error(r.f_ji_monte_carlo, in.rays), 3) + "). A_j F_ji by Monte Carlo = " +
-        num(aj * r.f_ji_monte_carlo, 6) + ".";
+        " (±" + num(ff::std_error(r.f_ji_monte_carlo, in.rays), 3) +
+        "). A_j F_ji by Monte Carlo = " + num(aj * r.f_ji_monte_carlo, 6) + ".";
     info.math = "F_{ji} = \\frac{A_i}{A_j} F_{ij} = \\frac{" + tex(ai, 6) + "}{" + tex(aj, 6) +
                 "} \\cdot " + tex(r.a_i_f_ij / ai, 6) + " = " + tex(r.f_ji_expected, 6);
 }
@@ -425,8 +427,9 @@ void narrate_row_sum(const State& s, StepInfo& info) {
     info.line = kLineRowSum;
     std::string terms;
     for (std::size_t k = 0; k < r.hemicube_terms.size(); ++k)
-        terms += (k ? ", " : "") + std::string(k ? "enclosure[" + std::to_string(k - 1) + "]" : "j") +
-                 " " + num(r.hemicube_terms[k], 4) + " / " + num(r.monte_carlo_terms[k], 4);
+        terms += (k ? ", " : "") +
+                 std::string(k ? "enclosure[" + std::to_string(k - 1) + "]" : "j") + " " +
+                 num(r.hemicube_terms[k], 4) + " / " + num(r.monte_carlo_terms[k], 4);
     info.narration =
         "The row sum over the enclosure (hemicube / Monte Carlo per patch: " + terms +
         "): Σ_k F_ik = " + num(r.hemicube, 6) + " by the hemicube (error " +
@@ -464,8 +467,8 @@ void fill_vars(const State& s, StepInfo& info) {
         const auto& r = *s.reciprocity;
         info.vars.push_back({"A_i F_ij", r.a_i_f_ij});
         info.vars.push_back({"F_ji_expected", r.f_ji_expected});
-        info.vars.push_back({"A_j_F_ij_over_A_i", area(in.to) * r.a_i_f_ij / area(in.from) /
-                                                      area(in.from)});
+        info.vars.push_back(
+            {"A_j_F_ij_over_A_i", area(in.to) * r.a_i_f_ij / area(in.from) / area(in.from)});
         if (r.f_ji_analytic) info.vars.push_back({"F_ji_analytic", *r.f_ji_analytic});
         info.vars.push_back({"F_ji_hemicube", r.f_ji_hemicube});
         info.vars.push_back({"F_ji_monte_carlo", r.f_ji_monte_carlo});
@@ -509,8 +512,8 @@ void FormFactor::narrate(const State& s, StepInfo& info) {
 
 namespace {
 
-FormFactor::Result assemble(const Input& in, const ff::Analytic& an, double hemicube, long long hits,
-                            long long rays) {
+FormFactor::Result assemble(const Input& in, const ff::Analytic& an, double hemicube,
+                            long long hits, long long rays) {
     FormFactor::Result r;
     r.area_from = area(in.from);
     r.area_to = area(in.to);
@@ -562,7 +565,8 @@ std::vector<dvec3> outline(const Patch& p, int segments = 32) {
             return {p.a, p.b, p.c};
         case Patch::Type::Disc: {
             std::vector<dvec3> pts;
-            for (int k = 0; k < segments; ++k) pts.push_back(point_at(p, 1.0, double(k) / segments));
+            for (int k = 0; k < segments; ++k)
+                pts.push_back(point_at(p, 1.0, double(k) / segments));
             return pts;
         }
         case Patch::Type::Point:
@@ -588,32 +592,45 @@ void FormFactor::draw(const State& s, Scene& scene) {
     const double arrow = 0.3 * std::min(size, std::max(dist, 0.3 * size));
 
     for (std::size_t k = 0; k < in.enclosure.size(); ++k)
-        scene.faces3.push_back({outline(in.enclosure[k]), {Role::Construction, 1.0f}, 0.06f, true, false});
+        scene.faces3.push_back(
+            {outline(in.enclosure[k]), {Role::Construction, 1.0f}, 0.06f, true, false});
     const bool recip = s.last == Phase::Reciprocity;
     if (in.from.type == Patch::Type::Point)
         scene.points3.push_back({ci, "dA (i)", {Role::Subject}, 6.0f});
     else
-        scene.faces3.push_back({outline(in.from), {recip ? Role::Kept : Role::Subject, 2.0f}, 0.45f, true, false});
-    scene.faces3.push_back({outline(in.to), {recip ? Role::Subject : Role::Kept, 2.0f}, 0.45f, true, false});
+        scene.faces3.push_back(
+            {outline(in.from), {recip ? Role::Kept : Role::Subject, 2.0f}, 0.45f, true, false});
+    scene.faces3.push_back(
+        {outline(in.to), {recip ? Role::Subject : Role::Kept, 2.0f}, 0.45f, true, false});
     scene.segments3.push_back({ci, ci + arrow * ni, "n_i", {Role::Subject, 2.0f}, true});
     scene.segments3.push_back({cj, cj + arrow * nj, "n_j", {Role::Kept, 2.0f}, true});
-    if (in.from.type != Patch::Type::Point) scene.labels3.push_back({outline(in.from)[0], "i", {Role::Subject}});
+    if (in.from.type != Patch::Type::Point)
+        scene.labels3.push_back({outline(in.from)[0], "i", {Role::Subject}});
     scene.labels3.push_back({outline(in.to)[0], "j", {Role::Kept}});
 
     // The hemicube.
     dvec3 t1, t2;
     tangents(in.from, t1, t2);
-    const double h = in.from.type == Patch::Type::Point ? 0.25 * std::max(dist, size)
-                                                        : 0.25 * extent(in.from);
+    const double h =
+        in.from.type == Patch::Type::Point ? 0.25 * std::max(dist, size) : 0.25 * extent(in.from);
     auto at = [&](double x, double y, double z) { return ci + h * (x * t1 + y * t2 + z * ni); };
-    const bool cube = s.last == Phase::Hemicube || s.last == Phase::Setup || s.last == Phase::Analytic;
+    const bool cube =
+        s.last == Phase::Hemicube || s.last == Phase::Setup || s.last == Phase::Analytic;
     if (cube) {
         // The five faces' outlines.
-        scene.faces3.push_back({{at(-1, -1, 1), at(1, -1, 1), at(1, 1, 1), at(-1, 1, 1)}, {Role::Window, 1.0f}, 0.05f});
-        scene.faces3.push_back({{at(1, -1, 0), at(1, 1, 0), at(1, 1, 1), at(1, -1, 1)}, {Role::Window, 1.0f}, 0.05f});
-        scene.faces3.push_back({{at(-1, -1, 0), at(-1, 1, 0), at(-1, 1, 1), at(-1, -1, 1)}, {Role::Window, 1.0f}, 0.05f});
-        scene.faces3.push_back({{at(-1, 1, 0), at(1, 1, 0), at(1, 1, 1), at(-1, 1, 1)}, {Role::Window, 1.0f}, 0.05f});
-        scene.faces3.push_back({{at(-1, -1, 0), at(1, -1, 0), at(1, -1, 1), at(-1, -1, 1)}, {Role::Window, 1.0f}, 0.05f});
+        scene.faces3.push_back({{at(-1, -1, 1), at(1, -1, 1), at(1, 1, 1), at(-1, 1, 1)},
+                                {Role::Window, 1.0f},
+                                0.05f});
+        scene.faces3.push_back(
+            {{at(1, -1, 0), at(1, 1, 0), at(1, 1, 1), at(1, -1, 1)}, {Role::Window, 1.0f}, 0.05f});
+        scene.faces3.push_back({{at(-1, -1, 0), at(-1, 1, 0), at(-1, 1, 1), at(-1, -1, 1)},
+                                {Role::Window, 1.0f},
+                                0.05f});
+        scene.faces3.push_back(
+            {{at(-1, 1, 0), at(1, 1, 0), at(1, 1, 1), at(-1, 1, 1)}, {Role::Window, 1.0f}, 0.05f});
+        scene.faces3.push_back({{at(-1, -1, 0), at(1, -1, 0), at(1, -1, 1), at(-1, -1, 1)},
+                                {Role::Window, 1.0f},
+                                0.05f});
     }
     if (s.last == Phase::Hemicube && int(s.coverage.size()) <= kMaxDrawnCells) {
         const double w = 2.0 / in.resolution;
@@ -624,18 +641,24 @@ void FormFactor::draw(const State& s, Scene& scene) {
             ff::cell(in.resolution, s.face, k, x, y, z, dF);
             // The cell's corners: across the face ±w/2 in its two in-face directions.
             dvec3 e1, e2;
-            if (s.face == 0) e1 = {0.5 * w, 0, 0}, e2 = {0, 0.5 * w, 0};
-            else if (s.face <= 2) e1 = {0, 0.5 * w, 0}, e2 = {0, 0, 0.5 * w};
-            else e1 = {0.5 * w, 0, 0}, e2 = {0, 0, 0.5 * w};
+            if (s.face == 0)
+                e1 = {0.5 * w, 0, 0}, e2 = {0, 0.5 * w, 0};
+            else if (s.face <= 2)
+                e1 = {0, 0.5 * w, 0}, e2 = {0, 0, 0.5 * w};
+            else
+                e1 = {0.5 * w, 0, 0}, e2 = {0, 0, 0.5 * w};
             const dvec3 m(x, y, z);
             auto P = [&](const dvec3& q) { return at(q.x, q.y, q.z); };
-            scene.faces3.push_back({{P(m - e1 - e2), P(m + e1 - e2), P(m + e1 + e2), P(m - e1 + e2)},
-                                    {Role::Active, 0.5f},
-                                    0.25f + 0.6f * c,
-                                    false});
+            scene.faces3.push_back(
+                {{P(m - e1 - e2), P(m + e1 - e2), P(m + e1 + e2), P(m - e1 + e2)},
+                 {Role::Active, 0.5f},
+                 0.25f + 0.6f * c,
+                 false});
         }
-        scene.labels3.push_back({at(0, 0, 1.15), std::string(ff::face_name(s.face)) + ": ΣΔF = " +
-                                                   num(s.face_sum, 4), {Role::Active}});
+        scene.labels3.push_back(
+            {at(0, 0, 1.15),
+             std::string(ff::face_name(s.face)) + ": ΣΔF = " + num(s.face_sum, 4),
+             {Role::Active}});
     }
 
     // The last batch's rays.
@@ -651,15 +674,20 @@ void FormFactor::draw(const State& s, Scene& scene) {
             if (t)
                 scene.segments3.push_back({o, o + *t * d, "", {Role::Kept, 1.0f}, false});
             else
-                scene.segments3.push_back({o, o + miss_len * d, "", {Role::Discarded, 1.0f, true}, false});
+                scene.segments3.push_back(
+                    {o, o + miss_len * d, "", {Role::Discarded, 1.0f, true}, false});
         }
     }
     scene.extent3 = 0;
-    auto finite3 = [](const dvec3& q) { return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z); };
+    auto finite3 = [](const dvec3& q) {
+        return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+    };
     std::erase_if(scene.faces3, [&](const Face3& f) {
-        return f.points.size() < 3 || std::any_of(f.points.begin(), f.points.end(), [&](const dvec3& q) { return !finite3(q); });
+        return f.points.size() < 3 || std::any_of(f.points.begin(), f.points.end(),
+                                                  [&](const dvec3& q) { return !finite3(q); });
     });
-    std::erase_if(scene.segments3, [&](const Segment3& g) { return !finite3(g.a) || !finite3(g.b); });
+    std::erase_if(scene.segments3,
+                  [&](const Segment3& g) { return !finite3(g.a) || !finite3(g.b); });
     std::erase_if(scene.points3, [&](const Point3& q) { return !finite3(q.p); });
     std::erase_if(scene.labels3, [&](const Label3& q) { return !finite3(q.p); });
 }

@@ -49,8 +49,8 @@ struct FormFactor {
     };
 
     struct Reciprocity {
-        double a_i_f_ij = 0;        // A_i F_ij (analytic if known, else Monte Carlo)
-        double f_ji_expected = 0;   // A_i F_ij / A_j
+        double a_i_f_ij = 0;       // A_i F_ij (analytic if known, else Monte Carlo)
+        double f_ji_expected = 0;  // A_i F_ij / A_j
         std::optional<double> f_ji_analytic;
         double f_ji_hemicube = 0, f_ji_monte_carlo = 0;
         bool operator==(const Reciprocity&) const = default;
@@ -68,12 +68,20 @@ struct FormFactor {
         std::string analytic_case = "none";
         double hemicube = 0, monte_carlo = 0, monte_carlo_std_error = 0;
         std::optional<double> error_hemicube, error_monte_carlo;  // |method − analytic|
-        std::optional<Reciprocity> reciprocity;  // not for a point (dA)
+        std::optional<Reciprocity> reciprocity;                   // not for a point (dA)
         std::optional<RowSum> row_sum;
         bool operator==(const Result&) const = default;
     };
 
-    enum class Phase : std::uint8_t { Setup, Analytic, Hemicube, MonteCarlo, Reciprocity, RowSum, Done };
+    enum class Phase : std::uint8_t {
+        Setup,
+        Analytic,
+        Hemicube,
+        MonteCarlo,
+        Reciprocity,
+        RowSum,
+        Done
+    };
 
     struct State {
         Shared<Input> in;
@@ -86,8 +94,8 @@ struct FormFactor {
         double hemicube = 0;          // the running sum
         std::vector<float> coverage;  // the last face's cells: fraction of points that see j
         Rng rng{1};
-        Rng batch_rng{1};             // the generator before the last batch (to redraw its rays)
-        int batch = 0;                // batches done
+        Rng batch_rng{1};  // the generator before the last batch (to redraw its rays)
+        int batch = 0;     // batches done
         long long rays_done = 0, hits = 0, batch_hits = 0;
         std::optional<Reciprocity> reciprocity;
         std::optional<RowSum> row_sum;

@@ -1,17 +1,19 @@
 // Form factor, JSON:
 //   input  {"from": patch, "to": patch,
-//           "hemicube": {"resolution": R (even, 2..128; default 8), "samples": m (1..8, default 3)},
-//           "monte_carlo": {"rays": N (1..10^6, default 1000), "seed": s (default 1)},
+//           "hemicube": {"resolution": R (even, 2..128; default 8), "samples": m (1..8, default
+//           3)}, "monte_carlo": {"rays": N (1..10^6, default 1000), "seed": s (default 1)},
 //           "enclosure": [patch, ...] (optional: the rest of a closed enclosure, for the row sum)}
 //   patch  {"type": "rectangle", "corner": [x, y, z], "edge_u": [..], "edge_v": [..]}
 //            (normal u × v; the edges perpendicular)
 //        | {"type": "disc", "center": [..], "normal": [..], "radius": r}
 //        | {"type": "triangle", "points": [[..], [..], [..]]}   (normal (p1 − p0) × (p2 − p0))
-//        | {"type": "point", "center": [..], "normal": [..]}     (a differential area dA; "from" only)
+//        | {"type": "point", "center": [..], "normal": [..]}     (a differential area dA; "from"
+//        only)
 //   result {"area_from", "area_to", "analytic": F | null, "analytic_case", "hemicube",
 //           "monte_carlo", "monte_carlo_std_error",
-//           "errors": {"hemicube", "monte_carlo", "monte_carlo_in_std_errors"} (null without analytic),
-//           "reciprocity": {"A_i_F_ij", "F_ji_expected", "F_ji_analytic", "F_ji_hemicube",
+//           "errors": {"hemicube", "monte_carlo", "monte_carlo_in_std_errors"} (null without
+//           analytic), "reciprocity": {"A_i_F_ij", "F_ji_expected", "F_ji_analytic",
+//           "F_ji_hemicube",
 //                           "F_ji_monte_carlo"} | null (for a point),
 //           "row_sum": {"analytic", "hemicube", "monte_carlo", "hemicube_terms",
 //                       "monte_carlo_terms"} | null (without an enclosure)}
@@ -38,17 +40,17 @@ Patch read_patch(const Reader& r) {
         r.only({"type", "points"});
         const auto pts = r.points3("points");
         if (pts.size() != 3)
-            throw InputError(r.field("points"), "a triangle has 3 points (got " +
-                                                    std::to_string(pts.size()) + ")");
+            throw InputError(r.field("points"),
+                             "a triangle has 3 points (got " + std::to_string(pts.size()) + ")");
         return Patch::triangle(pts[0], pts[1], pts[2]);
     }
     if (type == "point") {
         r.only({"type", "center", "normal"});
         return Patch::point(r.point3("center"), r.point3("normal"));
     }
-    throw InputError(r.field("type"),
-                     "must be \"rectangle\", \"disc\", \"triangle\" or \"point\", got \"" + type +
-                         "\"");
+    throw InputError(
+        r.field("type"),
+        "must be \"rectangle\", \"disc\", \"triangle\" or \"point\", got \"" + type + "\"");
 }
 
 json patch_json(const Patch& p) {
@@ -67,7 +69,8 @@ json patch_json(const Patch& p) {
             return json{{"type", "triangle"},
                         {"points", {nice_point(p.a), nice_point(p.b), nice_point(p.c)}}};
         case Patch::Type::Point:
-            return json{{"type", "point"}, {"center", nice_point(p.a)}, {"normal", nice_point(p.b)}};
+            return json{
+                {"type", "point"}, {"center", nice_point(p.a)}, {"normal", nice_point(p.b)}};
     }
     return json();
 }
@@ -101,8 +104,7 @@ struct JsonIo<FormFactor> {
                 in.resolution = int(bounded(h, "resolution", 2, FormFactor::kMaxResolution,
                                             "an even number of cells from 2 to 128"));
             if (h.has("samples"))
-                in.samples =
-                    int(bounded(h, "samples", 1, FormFactor::kMaxSamples, "from 1 to 8"));
+                in.samples = int(bounded(h, "samples", 1, FormFactor::kMaxSamples, "from 1 to 8"));
         }
         if (r.has("monte_carlo")) {
             const Reader m = r.object("monte_carlo");
@@ -116,13 +118,15 @@ struct JsonIo<FormFactor> {
         if (r.has("enclosure")) {
             const json& list = r.get("enclosure");
             if (!list.is_array())
-                throw InputError(r.field("enclosure"), "must be a list of patches, got " + describe(list));
+                throw InputError(r.field("enclosure"),
+                                 "must be a list of patches, got " + describe(list));
             if (list.size() > FormFactor::kMaxEnclosure)
                 throw InputError(r.field("enclosure"),
                                  "has " + std::to_string(list.size()) + " patches; at most " +
                                      std::to_string(FormFactor::kMaxEnclosure));
             for (std::size_t i = 0; i < list.size(); ++i)
-                in.enclosure.push_back(read_patch(Reader(list[i], element(r.field("enclosure"), i))));
+                in.enclosure.push_back(
+                    read_patch(Reader(list[i], element(r.field("enclosure"), i))));
         }
         return in;
     }
@@ -178,8 +182,16 @@ struct JsonIo<FormFactor> {
 
     static json example() {
         // Two unit squares facing each other at distance 1 (Howell C-11: F = 0.19982).
-        return json{{"from", {{"type", "rectangle"}, {"corner", {0, 0, 0}}, {"edge_u", {1, 0, 0}}, {"edge_v", {0, 1, 0}}}},
-                    {"to", {{"type", "rectangle"}, {"corner", {0, 0, 1}}, {"edge_u", {0, 1, 0}}, {"edge_v", {1, 0, 0}}}},
+        return json{{"from",
+                     {{"type", "rectangle"},
+                      {"corner", {0, 0, 0}},
+                      {"edge_u", {1, 0, 0}},
+                      {"edge_v", {0, 1, 0}}}},
+                    {"to",
+                     {{"type", "rectangle"},
+                      {"corner", {0, 0, 1}},
+                      {"edge_u", {0, 1, 0}},
+                      {"edge_v", {1, 0, 0}}}},
                     {"hemicube", {{"resolution", 8}, {"samples", 3}}},
                     {"monte_carlo", {{"rays", 1000}, {"seed", 1}}}};
     }

@@ -87,7 +87,9 @@ Analytic analytic(const Patch& from, const Patch& to) {
     const double scale = extent(from) + extent(to) + glm::length(centre(to) - centre(from));
     const double tol = 1e-9 * scale;
     using T = Patch::Type;
-    auto finish = [&](Analytic a) { return std::isfinite(a.value) && std::isfinite(a.reverse) ? a : Analytic{}; };
+    auto finish = [&](Analytic a) {
+        return std::isfinite(a.value) && std::isfinite(a.reverse) ? a : Analytic{};
+    };
     if (from.type == T::Rectangle && to.type == T::Rectangle) {
         const double lu = glm::length(from.b), lv = glm::length(from.c);
         if (const double c = coaxial(from, to, tol); c > 0) {
@@ -116,8 +118,9 @@ Analytic analytic(const Patch& from, const Patch& to) {
         };
         auto edges = [](const Patch& r) {
             const double lu = glm::length(r.b), lv = glm::length(r.c);
-            return std::array<Edge, 4>{Edge{r.a, r.a + r.b, lv}, Edge{r.a + r.b, r.a + r.b + r.c, lu},
-                                       Edge{r.a + r.b + r.c, r.a + r.c, lv}, Edge{r.a + r.c, r.a, lu}};
+            return std::array<Edge, 4>{
+                Edge{r.a, r.a + r.b, lv}, Edge{r.a + r.b, r.a + r.b + r.c, lu},
+                Edge{r.a + r.b + r.c, r.a + r.c, lv}, Edge{r.a + r.c, r.a, lu}};
         };
         for (const Edge& e : edges(from))
             for (const Edge& g : edges(to))
@@ -251,7 +254,8 @@ void hemicube_face(const Patch& from, const std::vector<dvec3>& points, const Pa
 double hemicube(const Patch& from, const Patch& to, int resolution, int m) {
     const auto points = hemicube_points(from, m);
     double sum = 0;
-    for (int f = 0; f < kFaces; ++f) hemicube_face(from, points, &to, 1, resolution, f, &sum, nullptr);
+    for (int f = 0; f < kFaces; ++f)
+        hemicube_face(from, points, &to, 1, resolution, f, &sum, nullptr);
     return sum;
 }
 

@@ -61,8 +61,8 @@ const char* case_name(Case c);  // "parallel-rectangles", ..., "none"
 
 struct Analytic {
     Case kase = Case::None;
-    double value = 0;    // F_ij (when kase != None)
-    double reverse = 0;  // F_ji by the same formula (not for a point)
+    double value = 0;                // F_ij (when kase != None)
+    double reverse = 0;              // F_ji by the same formula (not for a point)
     std::array<double, 3> params{};  // (a, b, c) | (l, w, h) | (r1, r2, h) | (r, h, 0)
     bool operator==(const Analytic&) const = default;
 };
@@ -86,9 +86,9 @@ std::vector<glm::dvec3> hemicube_points(const Patch& from, int m);
 // One face of the hemicube on every point, against `targets` (nearest hit wins): adds the mean
 // over the points of the covered cells' ΔF to sums[t]; `coverage` (if given, face_cells long)
 // receives per cell the fraction of points that see targets[0] through it.
-void hemicube_face(const Patch& from, const std::vector<glm::dvec3>& points,
-                   const Patch* targets, std::size_t count, int resolution, int face,
-                   double* sums, std::vector<float>* coverage);
+void hemicube_face(const Patch& from, const std::vector<glm::dvec3>& points, const Patch* targets,
+                   std::size_t count, int resolution, int face, double* sums,
+                   std::vector<float>* coverage);
 double hemicube(const Patch& from, const Patch& to, int resolution, int m);
 
 // One ray of the Monte Carlo estimate: its origin and cosine-distributed direction.
@@ -97,8 +97,8 @@ void mc_ray(const Patch& from, Rng& rng, glm::dvec3& origin, glm::dvec3& dir);
 int nearest(const Patch* targets, std::size_t count, const glm::dvec3& o, const glm::dvec3& d,
             double eps);
 // `rays` rays: hits[t] += the rays reaching targets[t] first.
-void mc_batch(const Patch& from, const Patch* targets, std::size_t count, long long rays,
-              Rng& rng, long long* hits, double eps);
+void mc_batch(const Patch& from, const Patch* targets, std::size_t count, long long rays, Rng& rng,
+              long long* hits, double eps);
 double monte_carlo(const Patch& from, const Patch& to, long long rays, std::uint64_t seed);
 double std_error(double f, long long n);  // sqrt(F (1 − F) / N)
 

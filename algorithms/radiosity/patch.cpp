@@ -15,6 +15,18 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Coordinates beyond this are refused: areas and distances squared then stay finite.
 constexpr double kMaxCoordinate = 1e100;
+
+// |v| and v / |v| without squaring overflow or underflow (edges up to 1e100 make cross products
+// up to 1e200, whose squares a double cannot hold).
+double safe_length(const dvec3& v) {
+    const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    if (m == 0 || !std::isfinite(m)) return m;
+    return m * glm::length(v / m);
+}
+dvec3 safe_normalize(const dvec3& v) {
+    const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    return glm::normalize(v / m);
+}
 }  // namespace
 
 Patch Patch::rectangle(dvec3 corner, dvec3 u, dvec3 v) {
@@ -47,11 +59,11 @@ const char* type_name(Patch::Type t) {
 double area(const Patch& p) {
     switch (p.type) {
         case Patch::Type::Rectangle:
-            return glm::length(glm::cross(p.b, p.c));
+            return safe_length(glm::cross(p.b, p.c));
         case Patch::Type::Disc:
             return kPi * p.radius * p.radius;
         case Patch::Type::Triangle:
-            return 0.5 * glm::length(glm::cross(p.b - p.a, p.c - p.a));
+            return 0.5 * safe_length(glm::cross(p.b - p.a, p.c - p.a));
         case Patch::Type::Point:
             return 0;
     }
@@ -61,12 +73,12 @@ double area(const Patch& p) {
 dvec3 normal(const Patch& p) {
     switch (p.type) {
         case Patch::Type::Rectangle:
-            return glm::normalize(glm::cross(p.b, p.c));
+            return safe_normalize(glm::cross(p.b, p.c));
         case Patch::Type::Disc:
         case Patch::Type::Point:
-            return glm::normalize(p.b);
+            return safe_normalize(p.b);
         case Patch::Type::Triangle:
-            return glm::normalize(glm::cross(p.b - p.a, p.c - p.a));
+            return safe_normalize(glm::cross(p.b - p.a, p.c - p.a));
     }
     return dvec3(0, 0, 1);
 }
@@ -85,12 +97,12 @@ dvec3 centre(const Patch& p) {
 double extent(const Patch& p) {
     switch (p.type) {
         case Patch::Type::Rectangle:
-            return std::max(glm::length(p.b), glm::length(p.c));
+            return std::max(safe_length(p.b), safe_length(p.c));
         case Patch::Type::Disc:
             return 2 * p.radius;
         case Patch::Type::Triangle:
-            return std::max({glm::length(p.b - p.a), glm::length(p.c - p.b),
-                             glm::length(p.a - p.c)});
+            return std::max(
+                {safe_length(p.b - p.a), safe_length(p.c - p.b), safe_length(p.a - p.c)});
         case Patch::Type::Point:
             return 0;
     }
@@ -101,10 +113,10 @@ void tangents(const Patch& p, dvec3& t1, dvec3& t2) {
     const dvec3 n = normal(p);
     switch (p.type) {
         case Patch::Type::Rectangle:
-            t1 = glm::normalize(p.b);
+            t1 = safe_normalize(p.b);
             break;
         case Patch::Type::Triangle:
-            t1 = glm::normalize(p.b - p.a);
+            t1 = safe_normalize(p.b - p.a);
             break;
         default: {
             const dvec3 axis = std::fabs(n.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
@@ -158,16 +170,17 @@ std::optional<double> hit(const Patch& p, const dvec3& o, const dvec3& d, double
             return std::nullopt;
         }
         case Patch::Type::Disc: {
-            const dvec3 un = glm::normalize(n);
+            const dvec3 un = safe_normalize(n);
             const dvec3 inplane = q - glm::dot(q, un) * un;
             if (glm::dot(inplane, inplane) <= p.radius * p.radius) return t;
             return std::nullopt;
         }
         case Patch::Type::Triangle: {
             const dvec3 e1 = p.b - p.a, e2 = p.c - p.a;
-            const double nn = glm::dot(n, n);
-            const double w1 = glm::dot(glm::cross(q, e2), n) / nn;   // weight of p1
-            const double w2 = glm::dot(glm::cross(e1, q), n) / nn;   // weight of p2
+            const double len = safe_length(n);
+            const dvec3 un = n / len;
+            const double w1 = glm::dot(glm::cross(q, e2), un) / len;  // weight of p1
+            const double w2 = glm::dot(glm::cross(e1, q), un) / len;  // weight of p2
             if (w1 >= 0 && w2 >= 0 && w1 + w2 <= 1) return t;
             return std::nullopt;
         }
@@ -182,7 +195,8 @@ namespace {
 void check_point(const dvec3& v, const std::string& field) {
     for (int i = 0; i < 3; ++i) {
         const std::string f = field + "[" + std::to_string(i) + "]";
-        if (!std::isfinite(v[i])) throw InputError(f, "must be a finite number (got " + num(v[i]) + ")");
+        if (!std::isfinite(v[i]))
+            throw InputError(f, "must be a finite number (got " + num(v[i]) + ")");
         if (std::fabs(v[i]) > kMaxCoordinate)
             throw InputError(f, "is too large (|" + num(v[i]) +
                                     "| > 1e100): areas and distances would overflow; scale the "
@@ -198,16 +212,18 @@ void validate_patch(const Patch& p, const std::string& field, bool allow_point) 
             check_point(p.a, field + ".corner");
             check_point(p.b, field + ".edge_u");
             check_point(p.c, field + ".edge_v");
-            const double lu = glm::length(p.b), lv = glm::length(p.c);
+            const double lu = safe_length(p.b), lv = safe_length(p.c);
             const double a = area(p);
             if (!(a > 0) || !(lu > 0) || !(lv > 0) || !std::isfinite(a))
-                throw InputError(field, "the rectangle has zero area (edge_u × edge_v = 0): a "
-                                        "form factor is per unit area of a patch");
+                throw InputError(field,
+                                 "the rectangle has zero area (edge_u × edge_v = 0): a "
+                                 "form factor is per unit area of a patch");
             if (std::fabs(glm::dot(p.b, p.c)) > 1e-9 * lu * lv)
                 throw InputError(field + ".edge_v",
                                  "must be perpendicular to edge_u (edge_u · edge_v = " +
-                                     num(glm::dot(p.b, p.c)) + "): a rectangle, not a "
-                                                               "parallelogram");
+                                     num(glm::dot(p.b, p.c)) +
+                                     "): a rectangle, not a "
+                                     "parallelogram");
             return;
         }
         case Patch::Type::Disc:
@@ -220,14 +236,15 @@ void validate_patch(const Patch& p, const std::string& field, bool allow_point) 
                 if (!std::isfinite(p.radius))
                     throw InputError(field + ".radius", "must be a finite number");
                 if (p.radius > kMaxCoordinate)
-                    throw InputError(field + ".radius", "is too large (> 1e100); scale the scene down");
-                if (!(p.radius > 0) || !(area(p) > 0))
                     throw InputError(field + ".radius",
-                                     "must be positive (got " + num(p.radius) +
-                                         "): a disc of radius 0 has zero area");
+                                     "is too large (> 1e100); scale the scene down");
+                if (!(p.radius > 0) || !(area(p) > 0))
+                    throw InputError(field + ".radius", "must be positive (got " + num(p.radius) +
+                                                            "): a disc of radius 0 has zero area");
             } else if (!allow_point) {
-                throw InputError(field, "a point (a differential area dA) can only be the patch a "
-                                        "form factor starts from (\"from\"): rays cannot hit it");
+                throw InputError(field,
+                                 "a point (a differential area dA) can only be the patch a "
+                                 "form factor starts from (\"from\"): rays cannot hit it");
             }
             return;
         }
@@ -237,8 +254,9 @@ void validate_patch(const Patch& p, const std::string& field, bool allow_point) 
             check_point(p.c, field + ".points[2]");
             const double a = area(p);
             if (!(a > 0) || !std::isfinite(a) || !std::isfinite(glm::length(normal(p))))
-                throw InputError(field, "the triangle has zero area (its points are collinear or "
-                                        "coincide): a form factor is per unit area of a patch");
+                throw InputError(field,
+                                 "the triangle has zero area (its points are collinear or "
+                                 "coincide): a form factor is per unit area of a patch");
             return;
         }
     }
