@@ -145,11 +145,11 @@ const Spec& FormFactor::spec() {
                         {"reciprocity", {"F_ji_expected"}}},
             .mistakes =
                 {
-                    {"analytic", "F_ij", "other:F_ij_times_pi",
+                    {"analytic", "F_ij", "copy:F_ij_times_pi",
                      "forgot the 1/π of the kernel cos θ_i cos θ_j / (π r²)"},
-                    {"reciprocity", "F_ji_expected", "other:A_j_F_ij_over_A_i",
+                    {"reciprocity", "F_ji_expected", "copy:A_j_F_ij_over_A_i",
                      "used A_j F_ij / A_i: the areas the wrong way round in A_i F_ij = A_j F_ji"},
-                    {"mc-batch", "F_mc", "other:N_ij_over_batches",
+                    {"mc-batch", "F_mc", "copy:N_ij_over_batches",
                      "divided the hits by the number of batches, not by the rays cast"},
                 },
         },
@@ -281,7 +281,8 @@ void FormFactor::advance(State& s) {
             s.hits += h;
             s.rays_done += n;
             ++s.batch;
-            if (s.batch == kBatches)
+            // Fewer rays than batches: the empty batches (always the last ones) are skipped.
+            if (s.batch == kBatches || batch_size(in, s.batch) == 0)
                 s.phase = is_point(in) ? (in.enclosure.empty() ? Phase::Done : Phase::RowSum)
                                        : Phase::Reciprocity;
             return;
@@ -301,11 +302,7 @@ void FormFactor::advance(State& s) {
 
 void FormFactor::step(State& s, StepInfo* info) {
     if (s.phase == Phase::Done) return;
-    // Batches of zero rays (fewer rays than batches) are not steps of their own.
     advance(s);
-    while (s.last == Phase::MonteCarlo && s.phase == Phase::MonteCarlo &&
-           batch_size(*s.in, s.batch) == 0)
-        advance(s);
     if (info) narrate(s, *info);
 }
 
@@ -542,8 +539,11 @@ FormFactor::Result FormFactor::compute(const Input& in) {
     const ff::Analytic an = ff::analytic(in.from, in.to);
     double hemicube = 0;
     const auto points = ff::hemicube_points(in.from, in.samples);
-    for (int f = 0; f < ff::kFaces; ++f)
-        ff::hemicube_face(in.from, points, &in.to, 1, in.resolution, f, &hemicube, nullptr);
+    for (int f = 0; f < ff::kFaces; ++f) {  // face by face, summed as the steps sum them
+        double face = 0;
+        ff::hemicube_face(in.from, points, &in.to, 1, in.resolution, f, &face, nullptr);
+        hemicube += face;
+    }
     Rng rng(in.seed);
     long long hits = 0;
     ff::mc_batch(in.from, &in.to, 1, in.rays, rng, &hits, ff::ray_eps(in.from, in.to));

@@ -181,16 +181,17 @@ struct JsonIo<FormFactor> {
     }
 
     static json example() {
-        // Two unit squares facing each other at distance 1 (Howell C-11: F = 0.19982).
+        // Two unit squares facing each other at distance 1, a floor and a ceiling (y up; Howell
+        // C-11: F = 0.19982).
         return json{{"from",
                      {{"type", "rectangle"},
                       {"corner", {0, 0, 0}},
                       {"edge_u", {1, 0, 0}},
-                      {"edge_v", {0, 1, 0}}}},
+                      {"edge_v", {0, 0, -1}}}},
                     {"to",
                      {{"type", "rectangle"},
-                      {"corner", {0, 0, 1}},
-                      {"edge_u", {0, 1, 0}},
+                      {"corner", {0, 1, 0}},
+                      {"edge_u", {0, 0, -1}},
                       {"edge_v", {1, 0, 0}}}},
                     {"hemicube", {{"resolution", 8}, {"samples", 3}}},
                     {"monte_carlo", {{"rays", 1000}, {"seed", 1}}}};
