@@ -666,7 +666,7 @@ void FormFactor::draw(const State& s, Scene& scene) {
         Rng rng = s.batch_rng;
         const long long n = std::min<long long>(batch_size(in, s.batch - 1), kMaxDrawnRays);
         const double eps = ff::ray_eps(in.from, in.to);
-        const double miss_len = std::max(dist, size) * 1.2;
+        const double miss_len = std::max(dist, size) * 0.7;
         for (long long k = 0; k < n; ++k) {
             dvec3 o, d;
             ff::mc_ray(in.from, rng, o, d);
