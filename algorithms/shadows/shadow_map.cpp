@@ -168,8 +168,10 @@ namespace {
 Frame look_at(const ShadowMap::Camera& c) {
     Frame f;
     f.origin = c.position;
-    f.forward = glm::normalize(c.target - c.position);
-    f.right = glm::normalize(glm::cross(f.forward, c.up));
+    const dvec3 v = c.target - c.position;
+    const dvec3 up = c.up / std::max({std::fabs(c.up.x), std::fabs(c.up.y), std::fabs(c.up.z)});
+    f.forward = glm::normalize(v / std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}));
+    f.right = glm::normalize(glm::cross(f.forward, up));
     f.up = glm::cross(f.right, f.forward);
     return f;
 }
@@ -255,8 +257,10 @@ ShadowMap::Lookup ShadowMap::lookup(const Input& in, const Frame& light, const F
     bool inside = l.d_p >= in.light.near && l.d_p <= in.light.far;
     if (inside) {
         const double scale = light.perspective ? l.d_p * light.half : light.half;
-        l.s = (l.p_light.x / scale + 1) / 2;
-        l.t = (l.p_light.y / scale + 1) / 2;
+        // A tiny extent can send a far-off point's coordinates past a double's range: it is
+        // off the map either way, and the numbers stay finite for the narration.
+        l.s = std::clamp((l.p_light.x / scale + 1) / 2, -1e300, 1e300);
+        l.t = std::clamp((l.p_light.y / scale + 1) / 2, -1e300, 1e300);
         inside = l.s >= 0 && l.s < 1 && l.t >= 0 && l.t < 1;
     }
     if (!inside) {
@@ -404,7 +408,11 @@ void check_camera(const ShadowMap::Camera& c, const std::string& name) {
                                                ".position: the view direction is target − "
                                                "position");
     if (c.up == dvec3(0)) throw InputError(name + ".up", "must not be the zero vector");
-    const dvec3 fu = glm::normalize(f), uu = glm::normalize(c.up);
+    // Scaled by the largest component first, so that a tiny up (1e-300) normalises.
+    auto unit = [](const dvec3& v) {
+        return glm::normalize(v / std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}));
+    };
+    const dvec3 fu = unit(f), uu = unit(c.up);
     if (glm::length(glm::cross(fu, uu)) < 1e-9)
         throw InputError(name + ".up",
                          "is parallel to the view direction (target − position): "
@@ -696,7 +704,7 @@ void fill_vars(const State& s, StepInfo& info) {
             info.vars.push_back({"P_L", vec4(l.p_light)});
             info.vars.push_back({"z_L", l.p_light.z});
             info.vars.push_back({"d_P", l.d_p});
-            if (l.verdict != Verdict::Outside || l.d_p >= in.light.near) {
+            if (l.d_p >= in.light.near && l.d_p <= in.light.far) {
                 info.vars.push_back({"s", l.s});
                 info.vars.push_back({"t", l.t});
             }

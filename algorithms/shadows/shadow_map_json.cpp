@@ -164,17 +164,17 @@ struct JsonIo<ShadowMap> {
     }
 
     static json example() {
-        // A square card at height 1 over a floor, a directional light from up and to the right,
-        // seen from the front: the card's shadow falls on the floor beside it.
+        // A square card at height 1 over a floor, a directional light from above and behind,
+        // seen from the front: the card's shadow falls on the floor in front of it.
         return parse_json(R"({
-            "triangles": [[[-2, 0, -2], [2, 0, -2], [2, 0, 2]], [[-2, 0, -2], [2, 0, 2], [-2, 0, 2]],
-                          [[-0.5, 1, -0.5], [0.5, 1, -0.5], [0.5, 1, 0.5]],
-                          [[-0.5, 1, -0.5], [0.5, 1, 0.5], [-0.5, 1, 0.5]]],
-            "light": {"type": "directional", "position": [2, 5, 0], "target": [0, 0, 0],
-                      "up": [0, 0, -1], "extent": 3, "near": 0.1, "far": 10},
-            "map_size": 8, "bias": 0.1,
-            "eye": {"position": [0, 5, 6], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40,
-                    "width": 12, "height": 9}})");
+            "triangles": [[[-3, 0, -3], [3, 0, -3], [3, 0, 3]], [[-3, 0, -3], [3, 0, 3], [-3, 0, 3]],
+                          [[-0.6, 1, -0.6], [0.6, 1, -0.6], [0.6, 1, 0.6]],
+                          [[-0.6, 1, -0.6], [0.6, 1, 0.6], [-0.6, 1, 0.6]]],
+            "light": {"type": "directional", "position": [1, 5, -2], "target": [0, 0, 0],
+                      "up": [0, 0, -1], "extent": 4, "near": 0.1, "far": 10},
+            "map_size": 8, "bias": 0.3,
+            "eye": {"position": [0, 3.5, 4], "target": [0, 0, 0.3], "up": [0, 1, 0], "fov_deg": 55,
+                    "width": 16, "height": 12}})");
     }
 };
 
