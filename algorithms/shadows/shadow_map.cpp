@@ -368,7 +368,7 @@ const Spec& ShadowMap::spec() {
         {},  // no sliders
         {
             .predict = {{"lit", {"d_P", "d_map"}},
-                        {"shadow", {"d_P", "i", "j", "d_map"}},
+                        {"shadow", {"i", "j"}},
                         {"rasterise", {"written"}}},
             .mistakes =
                 {
