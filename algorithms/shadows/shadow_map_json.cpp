@@ -168,8 +168,8 @@ struct JsonIo<ShadowMap> {
         // seen from the front: the card's shadow falls on the floor in front of it.
         return parse_json(R"({
             "triangles": [[[-3, 0, -3], [3, 0, -3], [3, 0, 3]], [[-3, 0, -3], [3, 0, 3], [-3, 0, 3]],
-                          [[-0.6, 1, -0.6], [0.6, 1, -0.6], [0.6, 1, 0.6]],
-                          [[-0.6, 1, -0.6], [0.6, 1, 0.6], [-0.6, 1, 0.6]]],
+                          [[-1, 1, -1], [1, 1, -1], [1, 1, 1]],
+                          [[-1, 1, -1], [1, 1, 1], [-1, 1, 1]]],
             "light": {"type": "directional", "position": [1, 5, -2], "target": [0, 0, 0],
                       "up": [0, 0, -1], "extent": 4, "near": 0.1, "far": 10},
             "map_size": 8, "bias": 0.3,

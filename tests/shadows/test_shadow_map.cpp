@@ -381,9 +381,9 @@ TEST_CASE("shadow-map: bias 0 gives acne on the lit floor, a proper bias none",
     const auto zero = ShadowMap::render(in);
     CHECK(zero.counts.acne > 100);
     // f = (−1, −5, 2) / √30: across the floor the depth changes by at most
-    // tan(angle between f and the normal) = √5 / 5 ≈ 0.45 per unit, so 0.22 over half of a
-    // 1-unit texel; a bias of 0.3 clears every texel.
-    in.bias = 0.3;
+    // tan(angle between f and the normal) = √5 / 5 ≈ 0.45 per unit, so 0.32 from a 1-unit
+    // texel's centre to its corner (0.71 away); a bias of 0.35 clears every texel.
+    in.bias = 0.35;
     const auto proper = ShadowMap::render(in);
     CHECK(proper.counts.acne == 0);
     CHECK(proper.counts.shadow > 10);
@@ -402,7 +402,7 @@ TEST_CASE("shadow-map: the disagreements with the shadow rays fall as the map gr
     std::vector<double> wrong;
     for (int n : {4, 8, 16, 32, 64}) {
         in.map_size = n;
-        in.bias = 2.4 / n;  // more than the 0.45 × half a texel (4 / n) the floor's slope needs
+        in.bias = 2.9 / n;  // more than 0.45 × half a texel's diagonal (√2 · 4 / n)
         const auto r = ShadowMap::render(in);
         const auto& c = r.counts;
         const double seen = c.lit + c.shadow + c.acne + c.false_shadow + c.false_lit;
