@@ -958,9 +958,10 @@ void ShadowMap::draw(const State& s, Scene& scene) {
                 map.rgba[q] = grey(hi > lo ? 40 + 170 * (s.depth[q] - lo) / (hi - lo) : 110);
     }
     scene.grids.push_back(std::move(map));
-    scene.labels.push_back(
-        {{0, n + 0.4 * std::max(1.0, n / 8.0)}, "depth map (from the light)", {Role::Window}});
-    const double gap = std::max(1.0, n / 6.0);
+    // The captions go under the grids, where a small map leaves room for them.
+    const double below = -0.6 * std::max(1.0, n / 8.0);
+    scene.labels.push_back({{0, below}, "depth map", {Role::Window}});
+    const double gap = std::max(2.0, n / 4.0);
     PixelGrid2 img;
     img.origin = {n + gap, 0};
     img.width = in.eye.width;
@@ -968,8 +969,7 @@ void ShadowMap::draw(const State& s, Scene& scene) {
     img.rgba.assign(std::size_t(img.width) * img.height, 0);
     for (std::size_t q = 0; q < s.image.size(); ++q) img.rgba[q] = verdict_colour(s.image[q]);
     scene.grids.push_back(std::move(img));
-    scene.labels.push_back(
-        {{n + gap, in.eye.height + 0.4 * std::max(1.0, n / 8.0)}, "eye image", {Role::Neutral}});
+    scene.labels.push_back({{n + gap, below}, "eye image", {Role::Neutral}});
     if (rasterising) {
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
