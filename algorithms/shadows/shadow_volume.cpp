@@ -418,7 +418,8 @@ void finish_ray(State& s) {
     r.crossings.clear();
     for (const Crossing& c : s.crossings) r.crossings.push_back(c.sign);
     r.in_shadow = s.count > 0;
-    r.shadow_ray = ShadowVolume::cones_containing(in, s.lit, r.hit, r.surface, true) > 0;
+    r.shadow_ray = r.surface != ShadowVolume::kNone &&
+                   ShadowVolume::cones_containing(in, s.lit, r.hit, r.surface, true) > 0;
     s.rays.push_back(std::move(r));
 }
 
@@ -814,7 +815,7 @@ void ShadowVolume::draw(const State& s, Scene& scene) {
     for (std::size_t k = 0; k < in.vertices.size(); ++k)
         scene.labels3.push_back({in.vertices[k], idx(int(k)), {Role::Subject}});
     // The edge being tested.
-    if (s.last == Phase::Edge && s.edge >= 0 && s.ray < 0) {
+    if (s.last == Phase::Edge && s.edge >= 0) {
         const auto& e = mesh.edges[s.edge];
         const bool sil = s.lit[e.f] != s.lit[e.g];
         scene.segments3.push_back({in.vertices[e.a],

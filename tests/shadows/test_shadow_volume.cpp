@@ -141,7 +141,7 @@ Reference reference(const Input& in, const dvec3& target, const std::vector<bool
                 c = lv(in.vertices[in.faces[f][2]]);
         if (!plane_hit(r.hit, s, a, b, c, t, m)) continue;
         if (t > -kGraze && t < 1 + kGraze && std::fabs(m) < kGraze) r.grazing = true;
-        if (std::fabs(t) < kGraze) r.grazing = true;  // P on another face's plane nearby
+        if (std::fabs(t) < kGraze && m > -kGraze) r.grazing = true;  // P on or by another face
         if (t > 0 && t < 1 && m >= 0) {
             r.blocked = true;
             r.cones += lit[f] ? 1 : 0;
@@ -339,7 +339,7 @@ TEST_CASE("shadow-volume: bad input names the field", "[shadows][shadow-volume]"
         ShadowVolume::start(with([](Input& in) { in.faces.pop_back(); })),
         Catch::Contains("has no neighbouring face") && Catch::Contains("the mesh is not closed"));
     CHECK_THROWS_WITH(ShadowVolume::start(with([](Input& in) { in.faces.pop_back(); })),
-                      Catch::StartsWith("occluder.faces[10]: its edge (7, 0)"));
+                      Catch::StartsWith("occluder.faces[7]: its edge (0, 4)"));
     CHECK_THROWS_WITH(
         ShadowVolume::start(with([](Input& in) { std::swap(in.faces[0][1], in.faces[0][2]); })),
         Catch::StartsWith("occluder.faces[") && Catch::Contains("in the same direction as face"));
@@ -485,7 +485,7 @@ TEST_CASE("shadow-volume: 4,000 random scenes against long-double shadow rays",
     CHECK(lit_points > 4000);
     CHECK(doubles > 20);
     CHECK(on_occluder > 3000);
-    CHECK(eye_inside > 100);
+    CHECK(eye_inside > 50);
     CHECK(loops > 2000);
 }
 
@@ -517,6 +517,8 @@ TEST_CASE("shadow-volume: replay on the example and the presets, run-to-end is s
     // Two occluders: the overlap counts 2.
     const cg::json two = cg::test::result_of("shadow-volume", lesson().presets[4].input);
     CHECK(two["rays"][0]["count"] == 2);
+    CHECK(two["rays"][1]["count"] == 1);
+    CHECK(two["rays"][2]["count"] == 0);
 }
 
 TEST_CASE("shadow-volume: exam problems are clear floor cases, half of them in shadow",
