@@ -798,7 +798,7 @@ void ShadowVolume::draw(const State& s, Scene& scene) {
                                  {fhi.x + m, y, flo.z - m}},
                                 {Role::Window, 1.0f},
                                 0.15f});
-        scene.labels3.push_back({{flo.x - m, y, flo.z - m}, "floor", {Role::Window}});
+        scene.labels3.push_back({{fhi.x + m, y, fhi.z + m}, "floor", {Role::Window}});
     }
 
     // The occluder.
