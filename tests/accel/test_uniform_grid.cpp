@@ -636,7 +636,9 @@ TEST_CASE(
                                  << exact_ties << " with several primitives at the nearest t, "
                                  << ties << " of them won by another primitive), " << inside
                                  << " from inside, " << missed_grid << " missing the grid, "
-                                 << corner_cases << " cells touched only (corners, edges); "
+                                 << corner_cases << " cells touched only (corners, edges), "
+                                 << skipped_cells << " cells rightly never visited, " << beyond
+                                 << " hits past their cell's entry; "
                                  << grid_tests << " primitive tests against brute force's "
                                  << brute_tests);
 }
