@@ -88,10 +88,19 @@ public:
 // an rvalue, as a hand-written loop would move its lists into its result: an algorithm whose
 // result is big may add `static Result result(State&&)` to move them out instead of copying
 // (Sutherland-Hodgman does); `result(const State&)` still serves everyone else.
+//
+// A temporary state (`run_to_end<A>(A::start(in))`) is stepped where it stands: taking it by
+// value made the inlined call copy it once more, and for a state of a few hundred bytes
+// (ray-quadric's, with its matrices) that copy cost as much as a step. A named state is
+// copied first and left as it was.
 template <class A>
-[[gnu::flatten]] typename A::Result run_to_end(typename A::State s) {
+[[gnu::flatten]] typename A::Result run_to_end(typename A::State&& s) {
     while (!A::done(s)) A::step(s, nullptr);
     return A::result(std::move(s));
+}
+template <class A>
+typename A::Result run_to_end(const typename A::State& s) {
+    return run_to_end<A>(typename A::State(s));
 }
 
 }  // namespace cg

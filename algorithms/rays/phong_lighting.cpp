@@ -203,8 +203,12 @@ void PhongLighting::validate_lighting(const Input& in) {
 
 PhongLighting::State PhongLighting::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+PhongLighting::State PhongLighting::begin(Shared<Input> in) {
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -255,33 +259,33 @@ void specular_term(const PhongLighting::Input& in, dvec3 n, dvec3 v, PhongLighti
 
 void PhongLighting::advance(State& s) {
     s.last = s.phase;
-    const int n_lights = static_cast<int>(s.in.lights.size());
+    const int n_lights = static_cast<int>(s.in->lights.size());
     Result& o = s.out;
     switch (s.phase) {
         case Phase::View:  // The unit normal and the view vector
-            o.rgb = s.in.rgb;
-            o.n = unit_of(s.in.normal);
-            o.v = unit_of(s.in.eye - s.in.point);
-            o.lights.reserve(s.in.lights.size());
+            o.rgb = s.in->rgb;
+            o.n = unit_of(s.in->normal);
+            o.v = unit_of(s.in->eye - s.in->point);
+            o.lights.reserve(s.in->lights.size());
             s.phase = Phase::Ambient;
             return;
         case Phase::Ambient:  // The ambient term
-            o.ambient = s.in.material.ka * s.in.ambient;
+            o.ambient = s.in->material.ka * s.in->ambient;
             s.phase = n_lights > 0 ? Phase::LightDir : Phase::Total;
             return;
         case Phase::LightDir:  // The next light: its direction and attenuation
             ++s.k;
             o.lights.emplace_back();
-            light_direction(s.in.lights[s.k], s.in.point, o.lights.back());
+            light_direction(s.in->lights[s.k], s.in->point, o.lights.back());
             s.phase = Phase::Diffuse;
             return;
         case Phase::Diffuse:  // Lambert's term
-            diffuse_term(s.in, o.n, o.lights.back(), s.in.lights[s.k]);
+            diffuse_term(*s.in, o.n, o.lights.back(), s.in->lights[s.k]);
             o.diffuse += o.lights.back().diffuse;
             s.phase = Phase::Specular;
             return;
         case Phase::Specular:  // The highlight
-            specular_term(s.in, o.n, o.v, o.lights.back(), s.in.lights[s.k]);
+            specular_term(*s.in, o.n, o.v, o.lights.back(), s.in->lights[s.k]);
             o.specular += o.lights.back().specular;
             s.phase = s.k + 1 < n_lights ? Phase::LightDir : Phase::Total;
             return;
@@ -338,27 +342,27 @@ void narrate_view(const PhongLighting::State& s, StepInfo& info) {
     info.line = kLineView;
     const double nv = dot(o.n, o.v);
     info.narration =
-        "n = " + num(s.in.normal) + "/|n| = " + num(o.n) +
-        "; v = (E − P)/|E − P| = " + num(s.in.eye - s.in.point) + "/" +
-        num(glm::length(s.in.eye - s.in.point)) + " = " + num(o.v) +
+        "n = " + num(s.in->normal) + "/|n| = " + num(o.n) +
+        "; v = (E − P)/|E − P| = " + num(s.in->eye - s.in->point) + "/" +
+        num(glm::length(s.in->eye - s.in->point)) + " = " + num(o.v) +
         (nv < 0 ? ". n·v = " + num(nv) + " < 0: the eye looks at the back of the surface." : ".");
-    info.math = "n = \\frac{" + tex(s.in.normal) + "}{" + tex(glm::length(s.in.normal)) +
+    info.math = "n = \\frac{" + tex(s.in->normal) + "}{" + tex(glm::length(s.in->normal)) +
                 "} = " + tex(o.n) + ",\\quad v = \\frac{E - P}{|E - P|} = " + tex(o.v);
 }
 
 void narrate_ambient(const PhongLighting::State& s, StepInfo& info) {
-    const bool rgb = s.in.rgb;
+    const bool rgb = s.in->rgb;
     info.event = "ambient";
     info.line = kLineAmbient;
-    info.narration = "Ambient: k_a I_a = " + ctext(s.in.material.ka, rgb) + " · " +
-                     ctext(s.in.ambient, rgb) + " = " + ctext(s.out.ambient, rgb) +
+    info.narration = "Ambient: k_a I_a = " + ctext(s.in->material.ka, rgb) + " · " +
+                     ctext(s.in->ambient, rgb) + " = " + ctext(s.out.ambient, rgb) +
                      ", a stand-in for light bounced around the scene, the same at every point.";
-    info.math = "k_a I_a = " + ctex(s.in.material.ka, rgb) + " \\cdot " + ctex(s.in.ambient, rgb) +
+    info.math = "k_a I_a = " + ctex(s.in->material.ka, rgb) + " \\cdot " + ctex(s.in->ambient, rgb) +
                 " = " + ctex(s.out.ambient, rgb);
 }
 
 void narrate_light(const PhongLighting::State& s, StepInfo& info) {
-    const PhongLighting::Light& L = s.in.lights[s.k];
+    const PhongLighting::Light& L = s.in->lights[s.k];
     const PhongLighting::LightTerms& t = s.out.lights.back();
     info.line = kLineLight;
     if (L.directional) {
@@ -384,9 +388,9 @@ void narrate_light(const PhongLighting::State& s, StepInfo& info) {
 }
 
 void narrate_diffuse(const PhongLighting::State& s, StepInfo& info) {
-    const PhongLighting::Light& L = s.in.lights[s.k];
+    const PhongLighting::Light& L = s.in->lights[s.k];
     const PhongLighting::LightTerms& t = s.out.lights.back();
-    const bool rgb = s.in.rgb;
+    const bool rgb = s.in->rgb;
     info.line = kLineDiffuse;
     if (!(t.n_dot_l > 0)) {
         info.event = "light-behind";
@@ -398,20 +402,20 @@ void narrate_diffuse(const PhongLighting::State& s, StepInfo& info) {
     }
     info.event = "diffuse";
     info.narration = "Lambert: att · I · k_d · (l·n) = " + num(t.attenuation) + " · " +
-                     ctext(L.intensity, rgb) + " · " + ctext(s.in.material.kd, rgb) + " · " +
+                     ctext(L.intensity, rgb) + " · " + ctext(s.in->material.kd, rgb) + " · " +
                      num(t.n_dot_l) + " = " + ctext(t.diffuse, rgb) +
                      " (l·n is the cosine of the light's angle from the normal).";
     info.math = "\\text{att}\\, I\\, k_d\\, (l \\cdot n) = " + tex(t.attenuation) + " \\cdot " +
-                ctex(L.intensity, rgb) + " \\cdot " + ctex(s.in.material.kd, rgb) + " \\cdot " +
+                ctex(L.intensity, rgb) + " \\cdot " + ctex(s.in->material.kd, rgb) + " \\cdot " +
                 tex(t.n_dot_l) + " = " + ctex(t.diffuse, rgb);
 }
 
 void narrate_specular(const PhongLighting::State& s, StepInfo& info) {
-    const PhongLighting::Light& L = s.in.lights[s.k];
+    const PhongLighting::Light& L = s.in->lights[s.k];
     const PhongLighting::LightTerms& t = s.out.lights.back();
-    const bool rgb = s.in.rgb;
-    const double p = s.in.material.shininess;
-    info.line = s.in.model == Model::Phong ? kLineSpecular : kLineBlinn;
+    const bool rgb = s.in->rgb;
+    const double p = s.in->material.shininess;
+    info.line = s.in->model == Model::Phong ? kLineSpecular : kLineBlinn;
     if (!(t.n_dot_l > 0)) {
         info.event = "no-specular";
         info.narration = "The light is behind the surface (l·n = " + num(t.n_dot_l) +
@@ -420,8 +424,8 @@ void narrate_specular(const PhongLighting::State& s, StepInfo& info) {
         return;
     }
     const std::string tail = " · " + num(t.attenuation) + " · " + ctext(L.intensity, rgb) + " · " +
-                             ctext(s.in.material.ks, rgb) + " = " + ctext(t.specular, rgb) + ".";
-    if (s.in.model == Model::Phong) {
+                             ctext(s.in->material.ks, rgb) + " = " + ctext(t.specular, rgb) + ".";
+    if (s.in->model == Model::Phong) {
         info.event = "phong-specular";
         info.narration = "Phong: r = −l + 2(l·n)n = " + num(t.r) + ", r·v = " + num(t.r_dot_v) +
                          (t.r_dot_v < 0 ? " (clamped to 0)" : "") +
@@ -447,7 +451,7 @@ void narrate_specular(const PhongLighting::State& s, StepInfo& info) {
 
 void narrate_total(const PhongLighting::State& s, StepInfo& info) {
     const auto& o = s.out;
-    const bool rgb = s.in.rgb;
+    const bool rgb = s.in->rgb;
     info.event = "total";
     info.line = kLineTotal;
     info.narration = "I = ambient + diffuse + specular = " + ctext(o.ambient, rgb) + " + " +
@@ -467,7 +471,7 @@ Value color_value(const Color& c, bool rgb) {
 
 void fill_vars(const PhongLighting::State& s, StepInfo& info) {
     const auto& o = s.out;
-    const bool rgb = s.in.rgb;
+    const bool rgb = s.in->rgb;
     info.vars = {{"n", vec(o.n)}, {"v", vec(o.v)}};
     if (s.last >= Phase::Ambient) info.vars.push_back({"ambient", color_value(o.ambient, rgb)});
     if (s.k >= 0) {
@@ -477,7 +481,7 @@ void fill_vars(const PhongLighting::State& s, StepInfo& info) {
         info.vars.push_back({"attenuation", t.attenuation});
         if (s.last != Phase::LightDir) info.vars.push_back({"n_dot_l", t.n_dot_l});
         if (s.last == Phase::Specular || s.last == Phase::Total) {
-            if (s.in.model == Model::Phong) {
+            if (s.in->model == Model::Phong) {
                 info.vars.push_back({"r", vec(t.r)});
                 info.vars.push_back({"r_dot_v", t.r_dot_v});
             } else {
@@ -526,7 +530,7 @@ void PhongLighting::narrate(const State& s, StepInfo& info) {
 // vector the model compares (r with v, or h with n). 2D: cos^p θ against θ in degrees for the
 // material's p and for p/4 and 4p, the half-width where it falls to 1/2, and this light's angle.
 void PhongLighting::draw(const State& s, Scene& scene) {
-    const Input& in = s.in;
+    const Input& in = *s.in;
     const dvec3 P = in.point;
     const double size = std::max(1.0, 0.5 * glm::length(in.eye - P));
     const dvec3 n = unit_of(in.normal);

@@ -29,6 +29,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 
 namespace cg {
 
@@ -80,7 +81,7 @@ struct PhongLighting {
     enum class Phase : std::uint8_t { View, Ambient, LightDir, Diffuse, Specular, Total, Done };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::View;
         Phase last = Phase::View;
         int k = -1;  // the light being worked on
@@ -95,6 +96,7 @@ struct PhongLighting {
     // For callers that light many points with one Input (the shading of a mesh).
     static void validate_lighting(const Input& in);
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s) { return s.out; }

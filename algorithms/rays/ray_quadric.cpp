@@ -221,8 +221,12 @@ void RayQuadric::validate(const Input& in) {
 
 RayQuadric::State RayQuadric::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+RayQuadric::State RayQuadric::begin(Shared<Input> in) {
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -245,11 +249,11 @@ void RayQuadric::advance(State& s) {
     s.last = s.phase;
     switch (s.phase) {
         case Phase::ToModel:  // Transform the ray into model space
-            s.prepared = prepare(s.in.quadric);
+            s.prepared = prepare(s.in->quadric);
             s.phase = Phase::Coefficients;
             return;
         case Phase::Coefficients:  // Substitute the ray: the quadratic's coefficients
-            s.quad = ray_quadratic(s.prepared, s.in.origin, s.in.direction);
+            s.quad = ray_quadratic(s.prepared, s.in->origin, s.in->direction);
             s.phase = Phase::Discriminant;
             return;
         case Phase::Discriminant:  // Compute the quadratic discriminant (or the linear case)
@@ -283,7 +287,7 @@ void RayQuadric::advance(State& s) {
             return;
         }
         case Phase::HitPoint:  // The hit point
-            s.hit.point = s.in.origin + s.hit.t * s.in.direction;
+            s.hit.point = s.in->origin + s.hit.t * s.in->direction;
             s.model_point = s.quad.origin + s.hit.t * s.quad.direction;
             s.phase = Phase::Normal;
             return;
@@ -341,7 +345,7 @@ std::string quadratic_tex(const RayQuadratic& q) {
 }
 
 void narrate_model(const RayQuadric::State& s, StepInfo& info) {
-    const Quadric& qd = s.in.quadric;
+    const Quadric& qd = s.in->quadric;
     const std::string surface =
         std::string(quadric_kind_name(qd.kind)) + " " + quadric_equation(qd, false);
     if (!s.prepared.transformed) {
@@ -349,24 +353,24 @@ void narrate_model(const RayQuadric::State& s, StepInfo& info) {
         info.line = kLineModel;
         info.narration = "The " + surface +
                          " has no model transform, so model space is world space: E_m = E = " +
-                         num(s.in.origin) + ", d_m = d = " + num(s.in.direction) + ".";
-        info.math = "E_m = E = " + tex(s.in.origin) + ",\\quad d_m = d = " + tex(s.in.direction);
+                         num(s.in->origin) + ", d_m = d = " + num(s.in->direction) + ".";
+        info.math = "E_m = E = " + tex(s.in->origin) + ",\\quad d_m = d = " + tex(s.in->direction);
         return;
     }
-    const dvec3 om = s.prepared.linear_inv * (s.in.origin - s.prepared.translation);
-    const dvec3 dm = s.prepared.linear_inv * s.in.direction;
+    const dvec3 om = s.prepared.linear_inv * (s.in->origin - s.prepared.translation);
+    const dvec3 dm = s.prepared.linear_inv * s.in->direction;
     info.event = "to-model";
     info.line = kLineModel;
     info.narration = "The " + surface + " is placed by M; solve in its model space instead: " +
                      "E_m = M⁻¹(E − T) = " + num(om) + " and d_m = M⁻¹d = " + num(dm) +
                      " (a direction is not translated). t means the same in both spaces.";
     info.math = "M^{-1} = " + matrix_tex(s.prepared.linear_inv) + ",\\quad E_m = M^{-1}(" +
-                tex(s.in.origin) + " - " + tex(s.prepared.translation) + ") = " + tex(om) +
-                ",\\quad d_m = M^{-1}" + tex(s.in.direction) + " = " + tex(dm);
+                tex(s.in->origin) + " - " + tex(s.prepared.translation) + ") = " + tex(om) +
+                ",\\quad d_m = M^{-1}" + tex(s.in->direction) + " = " + tex(dm);
 }
 
 void narrate_coefficients(const RayQuadric::State& s, StepInfo& info) {
-    const Shape sh = shape_of(s.in.quadric.kind);
+    const Shape sh = shape_of(s.in->quadric.kind);
     const RayQuadratic& q = s.quad;
     std::string a_sym = axis_sum(sh, "d_@^2");
     std::string b_sym = "2\\left(" + axis_sum(sh, "E_@ d_@") + "\\right)";
@@ -413,7 +417,7 @@ void narrate_discriminant(const RayQuadric::State& s, StepInfo& info) {
             info.event = "no-roots";
             info.line = kLineDiscriminant;
             info.narration = disc + " < 0: no real root, the ray misses the " +
-                             std::string(quadric_kind_name(s.in.quadric.kind)) + ".";
+                             std::string(quadric_kind_name(s.in->quadric.kind)) + ".";
             info.math = disc_tex + " < 0";
             return;
         case QuadraticCase::Linear:
@@ -514,7 +518,7 @@ void narrate_nearest(const RayQuadric::State& s, StepInfo& info) {
 }
 
 void narrate_point(const RayQuadric::State& s, StepInfo& info) {
-    const dvec3 E = s.in.origin, d = s.in.direction, P = s.hit.point;
+    const dvec3 E = s.in->origin, d = s.in->direction, P = s.hit.point;
     info.event = "hit-point";
     info.line = kLinePoint;
     info.narration =
@@ -525,7 +529,7 @@ void narrate_point(const RayQuadric::State& s, StepInfo& info) {
 }
 
 void narrate_normal(const RayQuadric::State& s, StepInfo& info) {
-    const Shape sh = shape_of(s.in.quadric.kind);
+    const Shape sh = shape_of(s.in->quadric.kind);
     std::string grad_sym =
         "\\nabla F = \\left(" + over("2x", sh.x) + ", " + over("2y", sh.y) + ", ";
     if (sh.z)
@@ -563,7 +567,7 @@ void narrate_normal(const RayQuadric::State& s, StepInfo& info) {
 }
 
 void fill_vars(const RayQuadric::State& s, StepInfo& info) {
-    info.vars = {{"E", vec(s.in.origin)}, {"d", vec(s.in.direction)}};
+    info.vars = {{"E", vec(s.in->origin)}, {"d", vec(s.in->direction)}};
     if (s.prepared.transformed) info.vars.push_back({"M_inv", rows3(s.prepared.linear_inv)});
     if (s.last >= Phase::Coefficients) {
         info.vars.push_back({"E_m", vec(s.quad.origin)});
@@ -625,14 +629,14 @@ void RayQuadric::narrate(const State& s, StepInfo& info) {
 // when the quadric is transformed, the ray as an arrow, its roots, the hit and the normal.
 // 2D: the quadratic f(t) = a t² + b t + c with its roots on the t axis.
 void RayQuadric::draw(const State& s, Scene& scene) {
-    const Quadric& q = s.in.quadric;
+    const Quadric& q = s.in->quadric;
     const double L = largest_param(q);
     const bool solved = s.phase > Phase::Discriminant || s.phase == Phase::Done;
     const bool have_quad = s.last >= Phase::Coefficients;
     const bool have_roots = s.last >= Phase::Roots && s.roots.count > 0;
 
     // Where along the ray is worth drawing: up to past the farthest root, or a few sizes.
-    const RayQuadratic model = ray_quadratic(prepare(q), s.in.origin, s.in.direction);
+    const RayQuadratic model = ray_quadratic(prepare(q), s.in->origin, s.in->direction);
     double t_end = 0;
     if (have_roots) t_end = std::max(t_end, s.roots.t[s.roots.count - 1]);
     const double speed = std::max(glm::length(model.direction), 1e-300);
@@ -656,7 +660,7 @@ void RayQuadric::draw(const State& s, Scene& scene) {
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, L, "", 0.5f});
 
     // The ray.
-    const dvec3 E = s.in.origin, d = s.in.direction;
+    const dvec3 E = s.in->origin, d = s.in->direction;
     scene.segments3.push_back({E, E + t_end * d, "E + t d", {Role::Active, 2.0f}, true});
     scene.points3.push_back({E, "E " + num(E, 4), {Role::Active}, 5.0f});
     if (have_roots) {

@@ -18,6 +18,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 #include "rays/quadric.hpp"
 
 namespace cg {
@@ -46,7 +47,7 @@ struct RayQuadric {
     enum class Verdict : std::uint8_t { Pending, Behind, OutsideSlab, Chosen, Farther };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::ToModel;  // the step to take next
         Phase last = Phase::ToModel;   // the step taken last (what narrate tells)
         PreparedQuadric prepared;
@@ -61,6 +62,7 @@ struct RayQuadric {
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s) { return s.hit; }

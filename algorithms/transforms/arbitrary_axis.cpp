@@ -151,8 +151,12 @@ void ArbitraryAxis::validate(const Input& in) {
 
 ArbitraryAxis::State ArbitraryAxis::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+ArbitraryAxis::State ArbitraryAxis::begin(Shared<Input> in) {
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -162,7 +166,7 @@ void ArbitraryAxis::advance(State& s) {
     s.last = s.phase;
     switch (s.phase) {
         case Phase::Choose: {  // Pick the closest coordinate axis
-            const Frame f = choose(s.in.axis);
+            const Frame f = choose(s.in->axis);
             s.i = f.i, s.j = f.j, s.k = f.k;
             s.scale = f.scale;
             s.as = f.as;
@@ -186,7 +190,7 @@ void ArbitraryAxis::advance(State& s) {
             return;
         }
         case Phase::Rotate:  // Rotate by θ about axis i
-            s.theta = rot::cos_sin_deg(s.in.angle_deg);
+            s.theta = rot::cos_sin_deg(s.in->angle_deg);
             s.spin = rot::rotation(s.i, s.theta);
             s.phase = Phase::UndoAxis;
             return;
@@ -200,13 +204,13 @@ void ArbitraryAxis::advance(State& s) {
             return;
         case Phase::Compose:  // The product, as the course writes it
             s.R = s.undo_plane * s.undo_axis * s.spin * s.to_axis * s.to_plane;
-            s.rotated.reserve(s.in.points.size());
-            s.phase = s.in.points.empty() ? Phase::Done : Phase::Points;
+            s.rotated.reserve(s.in->points.size());
+            s.phase = s.in->points.empty() ? Phase::Done : Phase::Points;
             return;
         case Phase::Points:  // Rotate one point
             ++s.p;
-            s.rotated.push_back(s.R * s.in.points[s.p]);
-            if (s.p + 1 == static_cast<int>(s.in.points.size())) s.phase = Phase::Done;
+            s.rotated.push_back(s.R * s.in->points[s.p]);
+            if (s.p + 1 == static_cast<int>(s.in->points.size())) s.phase = Phase::Done;
             return;
         case Phase::Done:
             return;
@@ -247,10 +251,10 @@ namespace {
 using State = ArbitraryAxis::State;
 
 dvec3 c_of(const State& s) {
-    return s.to_plane * s.in.axis;
+    return s.to_plane * s.in->axis;
 }  // R_j(−φ) a
 dvec3 d_of(const State& s) {
-    return s.to_axis * (s.to_plane * s.in.axis);
+    return s.to_axis * (s.to_plane * s.in->axis);
 }  // |a| e_i
 
 std::string deg_text(double d) {
@@ -258,7 +262,7 @@ std::string deg_text(double d) {
 }
 
 void narrate_choose(const State& s, StepInfo& info) {
-    const dvec3 a = s.in.axis;
+    const dvec3 a = s.in->axis;
     const char I = axis_name(s.i), J = axis_name(s.j), K = axis_name(s.k);
     int zeros = 0;
     for (int c = 0; c < 3; ++c) zeros += a[c] == 0;
@@ -290,7 +294,7 @@ void narrate_choose(const State& s, StepInfo& info) {
 }
 
 void narrate_to_plane(const State& s, StepInfo& info) {
-    const dvec3 a = s.in.axis;
+    const dvec3 a = s.in->axis;
     const char J = axis_name(s.j);
     const std::string ai = comp(s.i), ak = comp(s.k), plane = plane_name(s.i, s.j);
     const double r = std::hypot(a[s.i], a[s.k]);
@@ -349,10 +353,10 @@ void narrate_rotate(const State& s, StepInfo& info) {
     info.event = "rotate";
     info.line = kLineRotate;
     info.narration = std::string("The axis now is the ") + I +
-                     " axis: rotate by θ = " + deg_text(s.in.angle_deg) +
+                     " axis: rotate by θ = " + deg_text(s.in->angle_deg) +
                      " about it (cos θ = " + num(s.theta.c, 4) + ", sin θ = " + num(s.theta.s, 4) +
                      "): R_" + I + "(θ) = " + rot::matrix_text(s.spin) + ".";
-    info.math = std::string("R_") + I + "(" + tex(s.in.angle_deg) +
+    info.math = std::string("R_") + I + "(" + tex(s.in->angle_deg) +
                 "^\\circ) = " + rot::matrix_tex(s.spin, true);
 }
 
@@ -393,7 +397,7 @@ void narrate_compose(const State& s, StepInfo& info) {
 }
 
 void narrate_point(const State& s, StepInfo& info) {
-    const dvec3 p = s.in.points[s.p], q = s.rotated[s.p];
+    const dvec3 p = s.in->points[s.p], q = s.rotated[s.p];
     const std::string name = "P" + std::to_string(s.p);
     info.event = "rotate-point";
     info.line = kLinePoint;
@@ -406,9 +410,9 @@ void narrate_point(const State& s, StepInfo& info) {
 
 void fill_vars(const State& s, StepInfo& info) {
     const char I = axis_name(s.i), J = axis_name(s.j), K = axis_name(s.k);
-    info.vars = {{"a", vec(s.in.axis)},
+    info.vars = {{"a", vec(s.in->axis)},
                  {"|a|", ArbitraryAxis::length(s)},
-                 {"theta_deg", s.in.angle_deg},
+                 {"theta_deg", s.in->angle_deg},
                  {"canonical_axis", std::string(1, I)}};
     if (s.last >= Phase::ToPlane) {
         info.vars.push_back({"phi_deg", s.phi_deg});
@@ -428,7 +432,7 @@ void fill_vars(const State& s, StepInfo& info) {
     if (s.last >= Phase::Compose) info.vars.push_back({"R", rot::rows4(s.R)});
     if (s.last == Phase::Points) {
         info.vars.push_back({"k", static_cast<long long>(s.p)});
-        info.vars.push_back({"P", vec(s.in.points[s.p])});
+        info.vars.push_back({"P", vec(s.in->points[s.p])});
         info.vars.push_back({"P'", vec(s.rotated[s.p])});
     }
 }
@@ -505,11 +509,11 @@ ArbitraryAxis::Result ArbitraryAxis::result(State&& s) {
 // matrices applied so far have taken it), the angle of the current step as an arc, and the
 // input points with their images.
 void ArbitraryAxis::draw(const State& s, Scene& scene) {
-    const Frame f = choose(s.in.axis);
+    const Frame f = choose(s.in->axis);
     const dvec3 unit = f.as / glm::length(f.as);
     const dmat3 so_far = applied(s);
     double reach = 2.0;
-    for (const dvec3& p : s.in.points) reach = std::max(reach, 1.15 * glm::length(p));
+    for (const dvec3& p : s.in->points) reach = std::max(reach, 1.15 * glm::length(p));
     scene.extent3 = reach;
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.3, "", 0.9f});
 
@@ -522,7 +526,7 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
     scene.labels3.push_back({L * now,
                              moved && s.phase != Phase::Done && s.last < Phase::Compose
                                  ? "a (turned)"
-                                 : "a = " + num(s.in.axis, 4),
+                                 : "a = " + num(s.in->axis, 4),
                              {Role::Active}});
     if (moved) {
         scene.segments3.push_back({-L * unit, L * unit, "", construction, true});
@@ -563,8 +567,8 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
                 const dvec3 on = glm::dot(before, ei) * ei, off = before - on;
                 if (glm::length(off) > 0)
                     rot::draw_arc(scene, on, ei, off / glm::length(off), glm::length(off), 0,
-                                  rot::wrap_deg(s.in.angle_deg), arc, true,
-                                  "θ = " + num(s.in.angle_deg, 4) + "°");
+                                  rot::wrap_deg(s.in->angle_deg), arc, true,
+                                  "θ = " + num(s.in->angle_deg, 4) + "°");
                 break;
             }
             case Phase::UndoAxis:
@@ -582,25 +586,25 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
             case Phase::Done: {
                 const dvec3 on = glm::dot(h.centre, unit) * unit, off = h.centre - on;
                 rot::draw_arc(scene, on, unit, off / glm::length(off), glm::length(off), 0,
-                              rot::wrap_deg(s.in.angle_deg), arc, true,
-                              "θ = " + num(s.in.angle_deg, 4) + "° about a");
+                              rot::wrap_deg(s.in->angle_deg), arc, true,
+                              "θ = " + num(s.in->angle_deg, 4) + "° about a");
                 break;
             }
             case Phase::Choose:
                 break;
         }
 
-    for (int p = 0; p < static_cast<int>(s.in.points.size()); ++p) {
+    for (int p = 0; p < static_cast<int>(s.in->points.size()); ++p) {
         const std::string name = "P" + std::to_string(p);
         const bool now_p = s.last == Phase::Points && p == s.p;
-        scene.points3.push_back({s.in.points[p], name, {now_p ? Role::Active : Role::Subject}});
+        scene.points3.push_back({s.in->points[p], name, {now_p ? Role::Active : Role::Subject}});
         if (p < static_cast<int>(s.rotated.size())) {
             scene.points3.push_back(
                 {s.rotated[p], name + "′", {now_p ? Role::Active : Role::Kept}});
-            const dvec3 on = glm::dot(s.in.points[p], unit) * unit, off = s.in.points[p] - on;
+            const dvec3 on = glm::dot(s.in->points[p], unit) * unit, off = s.in->points[p] - on;
             if (glm::length(off) > 1e-12)
                 rot::draw_arc(scene, on, unit, off / glm::length(off), glm::length(off), 0,
-                              rot::wrap_deg(s.in.angle_deg),
+                              rot::wrap_deg(s.in->angle_deg),
                               {now_p ? Role::Active : Role::Construction, 1.0f, !now_p}, true, "");
         }
     }

@@ -34,6 +34,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 #include "transforms/rotation_common.hpp"
 
 namespace cg {
@@ -67,7 +68,7 @@ struct ArbitraryAxis {
     };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::Choose;
         Phase last = Phase::Choose;
         int i = 0, j = 1, k = 2;  // the canonical axis and the two after it
@@ -85,6 +86,7 @@ struct ArbitraryAxis {
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);

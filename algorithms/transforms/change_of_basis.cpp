@@ -263,8 +263,12 @@ void ChangeOfBasis::validate(const Input& in) {
 
 ChangeOfBasis::State ChangeOfBasis::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+ChangeOfBasis::State ChangeOfBasis::begin(Shared<Input> in) {
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -313,37 +317,37 @@ void ChangeOfBasis::advance(State& s) {
     Result& r = s.r;
     switch (s.phase) {
         case Phase::WorldFromF1:  // The frame F1 as a matrix; where the points are
-            r.world_from_f1 = world_from(s.in.from);
-            r.world.reserve(s.in.points.size());
-            for (const dvec3& p : s.in.points) r.world.push_back(point(r.world_from_f1, p));
+            r.world_from_f1 = world_from(s.in->from);
+            r.world.reserve(s.in->points.size());
+            for (const dvec3& p : s.in->points) r.world.push_back(point(r.world_from_f1, p));
             s.phase = Phase::WorldFromF2;
             return;
         case Phase::WorldFromF2:  // The frame F2 as a matrix
-            r.world_from_f2 = world_from(s.in.to);
+            r.world_from_f2 = world_from(s.in->to);
             s.phase = Phase::Inverse;
             return;
         case Phase::Inverse:  // Invert it (the shortcut when F2 is orthonormal)
-            r.orthonormal_to = orthonormal(s.in.to);
+            r.orthonormal_to = orthonormal(s.in->to);
             r.f2_from_world =
-                r.orthonormal_to ? inverse_orthonormal(s.in.to) : inverse_general(s.in.to);
+                r.orthonormal_to ? inverse_orthonormal(s.in->to) : inverse_general(s.in->to);
             s.phase = Phase::Compose;
             return;
         case Phase::Compose:  // The change-of-basis matrix
             r.matrix = r.f2_from_world * r.world_from_f1;
-            r.points.reserve(s.in.points.size());
-            r.vectors.reserve(s.in.vectors.size());
-            s.phase = !s.in.points.empty()    ? Phase::Points
-                      : !s.in.vectors.empty() ? Phase::Vectors
+            r.points.reserve(s.in->points.size());
+            r.vectors.reserve(s.in->vectors.size());
+            s.phase = !s.in->points.empty()    ? Phase::Points
+                      : !s.in->vectors.empty() ? Phase::Vectors
                                               : Phase::Done;
             return;
         case Phase::Points:  // Rewrite one point
-            r.points.push_back(point(r.matrix, s.in.points[r.points.size()]));
-            if (r.points.size() == s.in.points.size())
-                s.phase = s.in.vectors.empty() ? Phase::Done : Phase::Vectors;
+            r.points.push_back(point(r.matrix, s.in->points[r.points.size()]));
+            if (r.points.size() == s.in->points.size())
+                s.phase = s.in->vectors.empty() ? Phase::Done : Phase::Vectors;
             return;
         case Phase::Vectors:  // Rewrite one vector
-            r.vectors.push_back(vector(r.matrix, s.in.vectors[r.vectors.size()]));
-            if (r.vectors.size() == s.in.vectors.size()) s.phase = Phase::Done;
+            r.vectors.push_back(vector(r.matrix, s.in->vectors[r.vectors.size()]));
+            if (r.vectors.size() == s.in->vectors.size()) s.phase = Phase::Done;
             return;
         case Phase::Done:
             return;
@@ -386,7 +390,7 @@ void narrate_f1(const State& s, StepInfo& info) {
     const ChangeOfBasis::Result& r = s.r;
     info.event = "world-from-f1";
     info.line = kLineF1;
-    info.narration = "F1 has " + frame_text(s.in.from, "v", "O_v") +
+    info.narration = "F1 has " + frame_text(s.in->from, "v", "O_v") +
                      " (in world coordinates). As columns, with the homogeneous row 0 0 0 1, "
                      "they make world_from_F1 = " +
                      matrix_text(r.world_from_f1) +
@@ -399,7 +403,7 @@ void narrate_f1(const State& s, StepInfo& info) {
     const std::size_t shown = std::min<std::size_t>(r.world.size(), 3);
     for (std::size_t k = 0; k < shown; ++k) {
         const std::string name = "P" + std::to_string(k);
-        info.narration += " " + name + " = " + combination(s.in.points[k], "v", "O_v") + " = " +
+        info.narration += " " + name + " = " + combination(s.in->points[k], "v", "O_v") + " = " +
                           num(r.world[k], 4) + " in the world.";
         info.math += ",\\ P_" + std::to_string(k) + " = " + tex(r.world[k], 4);
     }
@@ -411,7 +415,7 @@ void narrate_f1(const State& s, StepInfo& info) {
 void narrate_f2(const State& s, StepInfo& info) {
     info.event = "world-from-f2";
     info.line = kLineF2;
-    info.narration = "F2 has " + frame_text(s.in.to, "w", "O_w") +
+    info.narration = "F2 has " + frame_text(s.in->to, "w", "O_w") +
                      ", so world_from_F2 = " + matrix_text(s.r.world_from_f2) +
                      " turns coordinates relative to F2 into world coordinates. We need the "
                      "opposite direction.";
@@ -423,7 +427,7 @@ void narrate_f2(const State& s, StepInfo& info) {
 
 void narrate_inverse(const State& s, StepInfo& info) {
     const ChangeOfBasis::Result& r = s.r;
-    const Frame& f = s.in.to;
+    const Frame& f = s.in->to;
     info.line = kLineInverse;
     if (r.orthonormal_to) {
         info.event = "inverse-orthonormal";
@@ -465,7 +469,7 @@ void narrate_compose(const State& s, StepInfo& info) {
                      "coordinates (the course's F1 = F2 M₁,₂).";
     info.math = "M_{1,2} = M_{F_2 \\leftarrow W} M_{W \\leftarrow F_1} = " + matrix_tex(r.matrix);
     if (r.orthonormal_to) {
-        const Frame &f1 = s.in.from, &f2 = s.in.to;
+        const Frame &f1 = s.in->from, &f2 = s.in->to;
         const dvec3 d = f1.origin - f2.origin;
         info.narration +=
             " Since F2 is orthonormal, each entry is a dot product: f_ij = w_i · v_j "
@@ -482,7 +486,7 @@ void narrate_point(const State& s, StepInfo& info) {
     const ChangeOfBasis::Result& r = s.r;
     const std::size_t k = r.points.size() - 1;
     const std::string name = "P" + std::to_string(k);
-    const dvec3 p = s.in.points[k], q = r.points[k];
+    const dvec3 p = s.in->points[k], q = r.points[k];
     const dvec3 back = point(r.world_from_f2, q);
     info.event = "map-point";
     info.line = kLinePoint;
@@ -502,7 +506,7 @@ void narrate_vector(const State& s, StepInfo& info) {
     const ChangeOfBasis::Result& r = s.r;
     const std::size_t k = r.vectors.size() - 1;
     const std::string name = "u" + std::to_string(k);
-    const dvec3 u = s.in.vectors[k], q = r.vectors[k];
+    const dvec3 u = s.in->vectors[k], q = r.vectors[k];
     const dvec3 world = vector(r.world_from_f1, u), back = vector(r.world_from_f2, q);
     info.event = "map-vector";
     info.line = kLineVector;
@@ -516,10 +520,10 @@ void narrate_vector(const State& s, StepInfo& info) {
 
 void fill_vars(const State& s, StepInfo& info) {
     const ChangeOfBasis::Result& r = s.r;
-    info.vars = {{"v1", vec(s.in.from.axes[0])}, {"v2", vec(s.in.from.axes[1])},
-                 {"v3", vec(s.in.from.axes[2])}, {"O_v", vec(s.in.from.origin)},
-                 {"w1", vec(s.in.to.axes[0])},   {"w2", vec(s.in.to.axes[1])},
-                 {"w3", vec(s.in.to.axes[2])},   {"O_w", vec(s.in.to.origin)}};
+    info.vars = {{"v1", vec(s.in->from.axes[0])}, {"v2", vec(s.in->from.axes[1])},
+                 {"v3", vec(s.in->from.axes[2])}, {"O_v", vec(s.in->from.origin)},
+                 {"w1", vec(s.in->to.axes[0])},   {"w2", vec(s.in->to.axes[1])},
+                 {"w3", vec(s.in->to.axes[2])},   {"O_w", vec(s.in->to.origin)}};
     info.vars.push_back({"world_from_F1", rows(r.world_from_f1)});
     if (s.last >= Phase::WorldFromF2) info.vars.push_back({"world_from_F2", rows(r.world_from_f2)});
     if (s.last >= Phase::Inverse) {
@@ -530,14 +534,14 @@ void fill_vars(const State& s, StepInfo& info) {
     if (s.last == Phase::Points) {
         const std::size_t k = r.points.size() - 1;
         info.vars.push_back({"k", static_cast<long long>(k)});
-        info.vars.push_back({"p", vec(s.in.points[k])});
+        info.vars.push_back({"p", vec(s.in->points[k])});
         info.vars.push_back({"P_world", vec(r.world[k])});
         info.vars.push_back({"p'", vec(r.points[k])});
     }
     if (s.last == Phase::Vectors) {
         const std::size_t k = r.vectors.size() - 1;
         info.vars.push_back({"k", static_cast<long long>(k)});
-        info.vars.push_back({"u", vec(s.in.vectors[k])});
+        info.vars.push_back({"u", vec(s.in->vectors[k])});
         info.vars.push_back({"u'", vec(r.vectors[k])});
     }
 }
@@ -578,7 +582,7 @@ void ChangeOfBasis::narrate(const State& s, StepInfo& info) {
 // lines: P reached from O_v along v₁, v₂, v₃ (the F1 step), and from O_w along w₁, w₂, w₃ (the
 // step that maps it). Vectors are drawn as arrows from O_v.
 void ChangeOfBasis::draw(const State& s, Scene& scene) {
-    const Frame &f1 = s.in.from, &f2 = s.in.to;
+    const Frame &f1 = s.in->from, &f2 = s.in->to;
     const Result& r = s.r;
     const bool started = s.phase != Phase::WorldFromF1;
     // Sizes from the largest |component| (a length could overflow for numbers near 1e100).
@@ -617,7 +621,7 @@ void ChangeOfBasis::draw(const State& s, Scene& scene) {
     const bool mapping_point = s.last == Phase::Points;
     const std::size_t current = mapping_point ? r.points.size() - 1 : r.points.size();
     for (std::size_t k = 0; k < r.world.size(); ++k) {
-        std::string label = "P" + std::to_string(k) + ": " + num(s.in.points[k], 4) + " in F1";
+        std::string label = "P" + std::to_string(k) + ": " + num(s.in->points[k], 4) + " in F1";
         if (k < r.points.size()) label += " = " + num(r.points[k], 4) + " in F2";
         const bool now = mapping_point && k == current;
         scene.points3.push_back({r.world[k],
@@ -625,13 +629,13 @@ void ChangeOfBasis::draw(const State& s, Scene& scene) {
                                  {now                   ? Role::Active
                                   : k < r.points.size() ? Role::Kept
                                                         : Role::Subject}});
-        if (s.last == Phase::WorldFromF1) path(f1, s.in.points[k], f1_lines);
+        if (s.last == Phase::WorldFromF1) path(f1, s.in->points[k], f1_lines);
         if (now) path(f2, r.points[k], f2_lines);
     }
     const bool mapping_vector = s.last == Phase::Vectors;
-    for (std::size_t k = 0; k < s.in.vectors.size(); ++k) {
-        const dvec3 world = vector(r.world_from_f1, s.in.vectors[k]);
-        std::string label = "u" + std::to_string(k) + ": " + num(s.in.vectors[k], 4) + " in F1";
+    for (std::size_t k = 0; k < s.in->vectors.size(); ++k) {
+        const dvec3 world = vector(r.world_from_f1, s.in->vectors[k]);
+        std::string label = "u" + std::to_string(k) + ": " + num(s.in->vectors[k], 4) + " in F1";
         if (k < r.vectors.size()) label += " = " + num(r.vectors[k], 4) + " in F2";
         const bool now = mapping_vector && k + 1 == r.vectors.size();
         scene.segments3.push_back({f1.origin,

@@ -29,6 +29,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 
 namespace cg {
 
@@ -81,7 +82,7 @@ struct ChangeOfBasis {
     };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::WorldFromF1;
         Phase last = Phase::WorldFromF1;
         Result r;  // filled step by step; the point (vector) mapped last is r.points.back()
@@ -91,6 +92,7 @@ struct ChangeOfBasis {
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s) { return s.r; }

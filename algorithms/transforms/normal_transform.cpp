@@ -168,8 +168,12 @@ void NormalTransform::validate(const Input& in) {
 
 NormalTransform::State NormalTransform::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+NormalTransform::State NormalTransform::begin(Shared<Input> in) {
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -180,27 +184,27 @@ void NormalTransform::advance(State& s) {
     Result& r = s.r;
     switch (s.phase) {
         case Phase::Linear:
-            r.det = determinant(s.in.linear);
+            r.det = determinant(s.in->linear);
             s.phase = Phase::Tangents;
             return;
         case Phase::Tangents:
-            r.tangents = s.in.has_tangents ? s.in.tangents : built_tangents(s.in.normal);
-            r.images = {s.in.linear * r.tangents[0], s.in.linear * r.tangents[1]};
+            r.tangents = s.in->has_tangents ? s.in->tangents : built_tangents(s.in->normal);
+            r.images = {s.in->linear * r.tangents[0], s.in->linear * r.tangents[1]};
             s.phase = Phase::Naive;
             return;
         case Phase::Naive:
-            r.naive = s.in.linear * s.in.normal;
+            r.naive = s.in->linear * s.in->normal;
             r.naive_cos = {cos_between(r.naive, r.images[0]), cos_between(r.naive, r.images[1])};
             r.naive_ok = std::fabs(r.naive_cos[0]) <= kPerpTolerance &&
                          std::fabs(r.naive_cos[1]) <= kPerpTolerance;
             s.phase = Phase::InverseTranspose;
             return;
         case Phase::InverseTranspose:
-            r.inverse_transpose = inverse_transpose(s.in.linear, r.det);
+            r.inverse_transpose = inverse_transpose(s.in->linear, r.det);
             s.phase = Phase::Correct;
             return;
         case Phase::Correct:
-            r.normal = r.inverse_transpose * s.in.normal;
+            r.normal = r.inverse_transpose * s.in->normal;
             r.unit_normal = glm::normalize(r.normal);
             r.cos = {cos_between(r.normal, r.images[0]), cos_between(r.normal, r.images[1])};
             s.phase = Phase::Done;
@@ -235,17 +239,17 @@ void NormalTransform::narrate(const State& s, StepInfo& info) {
         case Phase::Linear:
             info.event = "linear-part";
             info.line = kLineLinear;
-            info.narration = "The linear part L = " + matrix_text(s.in.linear) + " (det L = " +
+            info.narration = "The linear part L = " + matrix_text(s.in->linear) + " (det L = " +
                              num(r.det, 4) + "): tangents transform by L; translations do not "
                                              "act on vectors at all.";
-            info.math = "L = " + matrix_tex(s.in.linear) + ",\\ \\det L = " + tex(r.det, 4);
+            info.math = "L = " + matrix_tex(s.in->linear) + ",\\ \\det L = " + tex(r.det, 4);
             break;
         case Phase::Tangents:
             info.event = "tangents";
             info.line = kLineTangents;
-            info.narration = "n = " + num(s.in.normal) + " stands on the plane spanned by t₁ = " +
+            info.narration = "n = " + num(s.in->normal) + " stands on the plane spanned by t₁ = " +
                              num(r.tangents[0], 4) + " and t₂ = " + num(r.tangents[1], 4) +
-                             (s.in.has_tangents ? " (as given)" : " (t₁ = n × e for the axis e "
+                             (s.in->has_tangents ? " (as given)" : " (t₁ = n × e for the axis e "
                                                                    "least aligned with n, t₂ = n × t₁)") +
                              "; after the transformation they are L t₁ = " + num(r.images[0], 4) +
                              " and L t₂ = " + num(r.images[1], 4) + ".";
@@ -289,7 +293,7 @@ void NormalTransform::narrate(const State& s, StepInfo& info) {
                         ",\\ n'^T L t = n^T L^{-1} L t = n \\cdot t = 0";
             break;
     }
-    info.vars = {{"L", rows(s.in.linear)}, {"n", vec(s.in.normal)}};
+    info.vars = {{"L", rows(s.in->linear)}, {"n", vec(s.in->normal)}};
     if (s.last >= Phase::Linear) info.vars.push_back({"det", r.det});
     if (s.last >= Phase::Tangents) {
         info.vars.push_back({"t1", vec(r.tangents[0])});
@@ -317,13 +321,13 @@ void NormalTransform::step(State& s, StepInfo* info) {
 // 3 units along x, its image under L (scaled to fit), the naive L n and the correct N n.
 void NormalTransform::draw(const State& s, Scene& scene) {
     const bool tangents = s.phase > Phase::Tangents;
-    const std::array<dvec3, 2> t = tangents ? s.r.tangents : built_tangents(s.in.normal);
+    const std::array<dvec3, 2> t = tangents ? s.r.tangents : built_tangents(s.in->normal);
     const std::array<dvec3, 2> u = {glm::normalize(t[0]), glm::normalize(t[1])};
     const std::array<dvec3, 4> corners = {-u[0] - u[1], u[0] - u[1], u[0] + u[1], -u[0] + u[1]};
     std::vector<dvec3> before;
     for (const dvec3& c : corners) before.push_back(0.7 * c);
     scene.faces3.push_back({before, {Role::Subject}, 0.3f, true, true});
-    scene.segments3.push_back({{0, 0, 0}, glm::normalize(s.in.normal), "n", {Role::Neutral, 2.5f}, true});
+    scene.segments3.push_back({{0, 0, 0}, glm::normalize(s.in->normal), "n", {Role::Neutral, 2.5f}, true});
     scene.labels3.push_back({{0, -1.3, 0}, "before", {Role::Neutral}});
     scene.extent3 = 3.5;
     if (!tangents) return;
@@ -331,10 +335,10 @@ void NormalTransform::draw(const State& s, Scene& scene) {
     scene.segments3.push_back({{0, 0, 0}, 0.7 * u[1], "t₂", {Role::Construction, 1.5f}, true});
     const dvec3 o(3, 0, 0);
     double reach = 0;
-    for (const dvec3& c : corners) reach = std::max(reach, glm::length(s.in.linear * c));
+    for (const dvec3& c : corners) reach = std::max(reach, glm::length(s.in->linear * c));
     const double k = 1.0 / reach;  // the image scaled so that its farthest corner is at 1
     std::vector<dvec3> after;
-    for (const dvec3& c : corners) after.push_back(o + k * (s.in.linear * c));
+    for (const dvec3& c : corners) after.push_back(o + k * (s.in->linear * c));
     scene.faces3.push_back({after, {Role::Window}, 0.3f, true, true});
     scene.labels3.push_back({o + dvec3(0, -1.3, 0), "after L (scaled to fit)", {Role::Window}});
     if (s.phase > Phase::Naive)

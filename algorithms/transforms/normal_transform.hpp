@@ -25,6 +25,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 
 namespace cg {
 
@@ -58,7 +59,7 @@ struct NormalTransform {
     enum class Phase : std::uint8_t { Linear, Tangents, Naive, InverseTranspose, Correct, Done };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::Linear;
         Phase last = Phase::Linear;
         Result r;
@@ -68,6 +69,7 @@ struct NormalTransform {
     static const Spec& spec();
     static void validate(const Input& in);
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s) { return s.r; }

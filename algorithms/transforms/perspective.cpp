@@ -422,8 +422,12 @@ void Perspective::validate(const Input& in) {
 
 Perspective::State Perspective::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+Perspective::State Perspective::begin(Shared<Input> in) {
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -432,23 +436,23 @@ Perspective::State Perspective::start(const Input& in) {
 void Perspective::advance(State& s) {
     s.last = s.phase;
     Result& r = s.r;
-    const int n = static_cast<int>(s.in.points.size());
-    const int m = static_cast<int>(s.in.segments.size());
+    const int n = static_cast<int>(s.in->points.size());
+    const int m = static_cast<int>(s.in->segments.size());
     auto after_points = [&] { return m > 0 ? Phase::SegmentClip : Phase::Done; };
     switch (s.phase) {
         case Phase::Model:  // Model to world
-            r.model = s.in.model;
+            r.model = s.in->model;
             s.phase = Phase::View;
             return;
         case Phase::View: {  // The look-at frame
-            const Frame fr = view_frame(s.in);
+            const Frame fr = view_frame(*s.in);
             s.right = fr.right, s.up = fr.up, s.forward = fr.forward, s.eye = fr.eye;
-            r.view = s.in.look_at ? view_from(fr, s.in.convention) : dmat4(1.0);
+            r.view = s.in->look_at ? view_from(fr, s.in->convention) : dmat4(1.0);
             s.phase = Phase::Projection;
             return;
         }
         case Phase::Projection:  // The perspective matrix
-            r.projection = projection_matrix(s.in);
+            r.projection = projection_matrix(*s.in);
             r.mvp = r.projection * r.view * r.model;
             r.world.reserve(n), r.eye_coords.reserve(n), r.clip.reserve(n), r.ndc.reserve(n);
             r.inside.reserve(n), r.device.reserve(n), r.segments.reserve(m);
@@ -457,7 +461,7 @@ void Perspective::advance(State& s) {
             return;
         case Phase::PointView: {  // Model → world → view
             ++s.k;
-            const Through t = through(r, s.in.points[s.k]);
+            const Through t = through(r, s.in->points[s.k]);
             r.world.push_back(t.world);
             r.eye_coords.push_back(t.view);
             s.phase = Phase::PointClip;
@@ -476,20 +480,20 @@ void Perspective::advance(State& s) {
                 r.ndc.emplace_back(dvec3(c) / c.w);
             else
                 r.ndc.emplace_back(std::nullopt);
-            const bool device = s.in.has_viewport && c.w > 0;
+            const bool device = s.in->has_viewport && c.w > 0;
             if (!device) r.device.emplace_back(std::nullopt);
             s.phase = device ? Phase::PointDevice : (s.k + 1 < n ? Phase::PointView : after_points());
             return;
         }
         case Phase::PointDevice: {  // NDC → viewport
             const dvec3 q = *r.ndc[s.k];
-            r.device.emplace_back(dvec2((q.x + 1) * s.in.viewport.x / 2, (q.y + 1) * s.in.viewport.y / 2));
+            r.device.emplace_back(dvec2((q.x + 1) * s.in->viewport.x / 2, (q.y + 1) * s.in->viewport.y / 2));
             s.phase = s.k + 1 < n ? Phase::PointView : after_points();
             return;
         }
         case Phase::SegmentClip: {  // Clip against the near plane, in clip space
             ++s.j;
-            const auto& seg = s.in.segments[s.j];
+            const auto& seg = s.in->segments[s.j];
             r.segments.push_back(clip_near(through(r, seg[0]).clip, through(r, seg[1]).clip));
             if (r.segments.back().status != Status::Rejected)
                 s.phase = Phase::SegmentDivide;
@@ -525,7 +529,7 @@ std::string outside_planes(dvec4 c) {
 void narrate_model(const Perspective::State& s, StepInfo& info) {
     info.event = "model-matrix";
     info.line = kLineModel;
-    info.narration = s.in.has_model
+    info.narration = s.in->has_model
                          ? "The model matrix places the points in the world: M_model = " +
                                matrix_text(s.r.model) + "."
                          : "No model matrix given: M_model = I, the points are given in world "
@@ -534,9 +538,9 @@ void narrate_model(const Perspective::State& s, StepInfo& info) {
 }
 
 void narrate_view(const Perspective::State& s, StepInfo& info) {
-    const bool course = s.in.convention == Convention::Course;
+    const bool course = s.in->convention == Convention::Course;
     info.line = kLineView;
-    if (!s.in.look_at) {
+    if (!s.in->look_at) {
         info.event = "view-identity";
         info.narration = std::string("No eye, center or up given: V = I, world coordinates are "
                                      "view coordinates, with the eye at the origin looking down ") +
@@ -545,7 +549,7 @@ void narrate_view(const Perspective::State& s, StepInfo& info) {
         return;
     }
     info.event = "view-frame";
-    info.narration = "Eye " + num(s.in.eye) + " looking at " + num(s.in.center) +
+    info.narration = "Eye " + num(s.in->eye) + " looking at " + num(s.in->center) +
                      ": view direction f̂ = " + num(s.forward, 4) + ", right r = f̂ × up/|…| = " +
                      num(s.right, 4) + ", up u = r × f̂ = " + num(s.up, 4) + ". V has rows r, u, " +
                      (course ? "f̂ (the course's view looks down +z)"
@@ -557,8 +561,8 @@ void narrate_view(const Perspective::State& s, StepInfo& info) {
 }
 
 void narrate_frustum(const Perspective::State& s, StepInfo& info) {
-    const bool course = s.in.convention == Convention::Course;
-    const Perspective::Input& in = s.in;
+    const bool course = s.in->convention == Convention::Course;
+    const Perspective::Input& in = *s.in;
     const dmat4& p = s.r.projection;
     const std::string sx = course ? "−(r+l)/(r−l) = " : "(r+l)/(r−l) = ";
     const std::string sy = course ? "−(t+b)/(t−b) = " : "(t+b)/(t−b) = ";
@@ -585,18 +589,18 @@ void narrate_frustum(const Perspective::State& s, StepInfo& info) {
 }
 
 void narrate_projection(const Perspective::State& s, StepInfo& info) {
-    const bool course = s.in.convention == Convention::Course;
+    const bool course = s.in->convention == Convention::Course;
     const dmat4& p = s.r.projection;
     const double c = p[1][1];
     info.event = "projection-matrix";
     info.line = kLineProjection;
-    if (s.in.has_frustum) {
+    if (s.in->has_frustum) {
         narrate_frustum(s, info);
         return;
     }
-    info.narration = "fov_y = " + num(s.in.fov_y_deg) + "°: c = cot(" + num(s.in.fov_y_deg / 2) +
+    info.narration = "fov_y = " + num(s.in->fov_y_deg) + "°: c = cot(" + num(s.in->fov_y_deg / 2) +
                      "°) = " + num(c, 4) + ", c/a = " + num(p[0][0], 4) + " for aspect " +
-                     num(s.in.aspect) + "; near " + num(s.in.near) + ", far " + num(s.in.far) +
+                     num(s.in->aspect) + "; near " + num(s.in->near) + ", far " + num(s.in->far) +
                      ": " + (course ? "(f+n)/(f−n) = " : "−(f+n)/(f−n) = ") + num(p[2][2], 4) +
                      ", −2fn/(f−n) = " + num(p[3][2], 4) + ", and w = " +
                      (course ? "z" : "−z") + ". P = " + matrix_text(p) +
@@ -612,9 +616,9 @@ void narrate_point_view(const Perspective::State& s, StepInfo& info) {
     const int k = s.k;
     info.event = "point-to-view";
     info.line = kLinePointView;
-    info.narration = point_name(k) + " = " + num(s.in.points[k]) + ": in the world " +
+    info.narration = point_name(k) + " = " + num(s.in->points[k]) + ": in the world " +
                      num(s.r.world[k], 4) + ", in view coordinates " + num(s.r.eye_coords[k], 4) +
-                     " (depth " + num(zsign(s.in.convention) * s.r.eye_coords[k].z, 4) +
+                     " (depth " + num(zsign(s.in->convention) * s.r.eye_coords[k].z, 4) +
                      " along the view direction).";
     info.math = "p_{view} = V M_{model} p = " + tex(s.r.eye_coords[k], 4);
 }
@@ -670,8 +674,8 @@ void narrate_point_device(const Perspective::State& s, StepInfo& info) {
     const dvec2 d = *s.r.device[k];
     info.event = "to-viewport";
     info.line = kLinePointDevice;
-    info.narration = point_name(k) + "_device = ((" + num(q.x, 4) + " + 1)·" + num(s.in.viewport.x) +
-                     "/2, (" + num(q.y, 4) + " + 1)·" + num(s.in.viewport.y) + "/2) = " +
+    info.narration = point_name(k) + "_device = ((" + num(q.x, 4) + " + 1)·" + num(s.in->viewport.x) +
+                     "/2, (" + num(q.y, 4) + " + 1)·" + num(s.in->viewport.y) + "/2) = " +
                      num(d, 4) + " px.";
     info.math = "p_{device} = " + tex(d, 4);
 }
@@ -739,22 +743,22 @@ void narrate_segment_divide(const Perspective::State& s, StepInfo& info) {
 }
 
 void fill_vars(const Perspective::State& s, StepInfo& info) {
-    if (s.in.has_frustum)
-        info.vars = {{"left", s.in.left},     {"right", s.in.right}, {"bottom", s.in.bottom},
-                     {"top", s.in.top},       {"near", s.in.near},   {"far", s.in.far},
+    if (s.in->has_frustum)
+        info.vars = {{"left", s.in->left},     {"right", s.in->right}, {"bottom", s.in->bottom},
+                     {"top", s.in->top},       {"near", s.in->near},   {"far", s.in->far},
                      {"M_model", rows(s.r.model)}};
     else
-        info.vars = {{"fov_y_deg", s.in.fov_y_deg},
-                     {"aspect", s.in.aspect},
-                     {"near", s.in.near},
-                     {"far", s.in.far},
+        info.vars = {{"fov_y_deg", s.in->fov_y_deg},
+                     {"aspect", s.in->aspect},
+                     {"near", s.in->near},
+                     {"far", s.in->far},
                      {"M_model", rows(s.r.model)}};
     if (s.last >= Phase::View) info.vars.push_back({"V", rows(s.r.view)});
     if (s.last >= Phase::Projection) info.vars.push_back({"P", rows(s.r.projection)});
     const int k = s.k;
     if (s.last >= Phase::PointView && s.last <= Phase::PointDevice) {
         info.vars.push_back({"k", static_cast<long long>(k)});
-        info.vars.push_back({"p", vec(s.in.points[k])});
+        info.vars.push_back({"p", vec(s.in->points[k])});
         info.vars.push_back({"p_world", vec(s.r.world[k])});
         info.vars.push_back({"p_view", vec(s.r.eye_coords[k])});
         if (s.last >= Phase::PointClip) {
@@ -849,7 +853,7 @@ void Perspective::step(State& s, StepInfo* info) {
 // rays cross the near plane, and the segments with the part the near plane cuts off. 2D: the
 // NDC square with the projected points and the kept parts of the segments.
 void Perspective::draw(const State& s, Scene& scene) {
-    const Input& in = s.in;
+    const Input& in = *s.in;
     const Frame fr = view_frame(in);
     // The frustum's x and y range per unit depth: symmetric for the fov form, the near
     // rectangle over n for the frustum form (glFrustum's l, r, b, t).

@@ -52,6 +52,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 
 namespace cg {
 
@@ -117,7 +118,7 @@ struct Perspective {
     };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::Model;
         Phase last = Phase::Model;
         int k = -1;  // the point worked last
@@ -130,6 +131,7 @@ struct Perspective {
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s) { return s.r; }

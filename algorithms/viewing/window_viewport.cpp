@@ -204,8 +204,12 @@ void WindowViewport::validate(const Input& in) {
 
 WindowViewport::State WindowViewport::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+WindowViewport::State WindowViewport::begin(Shared<Input> in) {
     State s;
-    s.in = in;
+    s.in = std::move(in);
     return s;
 }
 
@@ -215,34 +219,34 @@ WindowViewport::State WindowViewport::start(const Input& in) {
 // running to completion (no StepInfo) costs about what the plain map() does.
 void WindowViewport::advance(State& s) {
     s.last = s.phase;
-    const int n = static_cast<int>(s.in.points.size());
+    const int n = static_cast<int>(s.in->points.size());
     switch (s.phase) {
         case Phase::Aspect:  // Compare the shapes of window and viewport
-            s.aspect_window = std::fabs(width(s.in.window) / height(s.in.window));
-            s.aspect_viewport = std::fabs(width(s.in.viewport) / height(s.in.viewport));
+            s.aspect_window = std::fabs(width(s.in->window) / height(s.in->window));
+            s.aspect_viewport = std::fabs(width(s.in->viewport) / height(s.in->viewport));
             s.distorted = aspects_differ(s.aspect_window, s.aspect_viewport);
             s.phase = Phase::NdcMatrix;
             return;
         case Phase::NdcMatrix:  // The window-to-NDC matrix
-            s.ndc_from_window = ndc_from(s.in.window);
-            s.ndc.reserve(s.in.points.size());
+            s.ndc_from_window = ndc_from(s.in->window);
+            s.ndc.reserve(s.in->points.size());
             s.k = -1;
             s.phase = n > 0 ? Phase::ToNdc : Phase::DeviceMatrix;
             return;
         case Phase::ToNdc:  // Map one point to NDC
             ++s.k;
-            s.ndc.push_back(to_ndc(s.in.window, s.in.points[s.k]));
+            s.ndc.push_back(to_ndc(s.in->window, s.in->points[s.k]));
             if (s.k + 1 == n) s.phase = Phase::DeviceMatrix;
             return;
         case Phase::DeviceMatrix:  // The NDC-to-viewport matrix
-            s.device_from_ndc = device_from(s.in.viewport);
-            s.device.reserve(s.in.points.size());
+            s.device_from_ndc = device_from(s.in->viewport);
+            s.device.reserve(s.in->points.size());
             s.k = -1;
             s.phase = n > 0 ? Phase::ToDevice : Phase::Compose;
             return;
         case Phase::ToDevice:  // Map one point from NDC to the device
             ++s.k;
-            s.device.push_back(to_device(s.in.viewport, s.ndc[s.k]));
+            s.device.push_back(to_device(s.in->viewport, s.ndc[s.k]));
             if (s.k + 1 == n) s.phase = Phase::Compose;
             return;
         case Phase::Compose:  // Window to device in one matrix
@@ -295,7 +299,7 @@ std::string flip_note(const Rect& v) {
 }
 
 void narrate_aspect(const WindowViewport::State& s, StepInfo& info) {
-    const Rect &w = s.in.window, &v = s.in.viewport;
+    const Rect &w = s.in->window, &v = s.in->viewport;
     const double sx = width(v) / width(w), sy = height(v) / height(w);
     const std::string sizes = "Window " + num(width(w)) + " × " + num(height(w)) +
                               " (aspect Lw/Hw = " + num(s.aspect_window, 4) + "), viewport " +
@@ -327,7 +331,7 @@ void narrate_aspect(const WindowViewport::State& s, StepInfo& info) {
 }
 
 void narrate_ndc_matrix(const WindowViewport::State& s, StepInfo& info) {
-    const Rect& w = s.in.window;
+    const Rect& w = s.in->window;
     const dmat3& m = s.ndc_from_window;
     info.event = "window-to-ndc";
     info.line = kLineNdcMatrix;
@@ -345,8 +349,8 @@ void narrate_ndc_matrix(const WindowViewport::State& s, StepInfo& info) {
 }
 
 void narrate_to_ndc(const WindowViewport::State& s, StepInfo& info) {
-    const Rect& w = s.in.window;
-    const dvec2 p = s.in.points[s.k], q = s.ndc[s.k];
+    const Rect& w = s.in->window;
+    const dvec2 p = s.in->points[s.k], q = s.ndc[s.k];
     info.event = "point-to-ndc";
     info.line = kLineToNdc;
     info.narration = point_name(s.k) + " = " + num(p) + ": x_ndc = 2·(" + num(p.x) + " − " +
@@ -362,7 +366,7 @@ void narrate_to_ndc(const WindowViewport::State& s, StepInfo& info) {
 }
 
 void narrate_device_matrix(const WindowViewport::State& s, StepInfo& info) {
-    const Rect& v = s.in.viewport;
+    const Rect& v = s.in->viewport;
     const dmat3& m = s.device_from_ndc;
     info.event = "ndc-to-viewport";
     info.line = kLineDeviceMatrix;
@@ -378,7 +382,7 @@ void narrate_device_matrix(const WindowViewport::State& s, StepInfo& info) {
 }
 
 void narrate_to_device(const WindowViewport::State& s, StepInfo& info) {
-    const Rect& v = s.in.viewport;
+    const Rect& v = s.in->viewport;
     const dvec2 q = s.ndc[s.k], d = s.device[s.k];
     info.event = "point-to-device";
     info.line = kLineToDevice;
@@ -404,7 +408,7 @@ void narrate_compose(const WindowViewport::State& s, StepInfo& info) {
 }
 
 void fill_vars(const WindowViewport::State& s, StepInfo& info) {
-    const Rect &w = s.in.window, &v = s.in.viewport;
+    const Rect &w = s.in->window, &v = s.in->viewport;
     info.vars = {{"Lw", width(w)},
                  {"Hw", height(w)},
                  {"Lv", width(v)},
@@ -417,7 +421,7 @@ void fill_vars(const WindowViewport::State& s, StepInfo& info) {
     if (s.last == Phase::Compose) info.vars.push_back({"M", rows(s.device_from_window)});
     if (s.last == Phase::ToNdc || s.last == Phase::ToDevice) {
         info.vars.push_back({"k", static_cast<long long>(s.k)});
-        info.vars.push_back({"P", vec(s.in.points[s.k])});
+        info.vars.push_back({"P", vec(s.in->points[s.k])});
         info.vars.push_back({"P_ndc", vec(s.ndc[s.k])});
         if (s.last == Phase::ToDevice) info.vars.push_back({"P_device", vec(s.device[s.k])});
     }
@@ -448,10 +452,13 @@ void WindowViewport::step(State& s, StepInfo* info) {
 
 // ---- [result and map] -----------------------------------------------------------------------
 
-WindowViewport::Result WindowViewport::result(const State& s) {
+WindowViewport::Result WindowViewport::result(const State& s) { return result(State(s)); }
+
+// The spent state's lists move into the result, as map() builds its own in place.
+WindowViewport::Result WindowViewport::result(State&& s) {
     Result r;
-    r.ndc = s.ndc;
-    r.device = s.device;
+    r.ndc = std::move(s.ndc);
+    r.device = std::move(s.device);
     r.ndc_from_window = s.ndc_from_window;
     r.device_from_ndc = s.device_from_ndc;
     r.device_from_window = s.device_from_window;
@@ -485,7 +492,7 @@ WindowViewport::Result WindowViewport::result(const State& s) {
 // Each panel sits a little higher than the one before, so the lines from points to their
 // images slant and do not run along one another.
 void WindowViewport::draw(const State& s, Scene& scene) {
-    const Rect &w = s.in.window, &v = s.in.viewport;
+    const Rect &w = s.in->window, &v = s.in->viewport;
     const double h = height(w), gap = 0.5 * std::max(h, 0.25 * width(w)), rise = 0.4 * h;
     const double ndc_x0 = w.xmax + gap, vp_x0 = ndc_x0 + h + gap;
     // The viewport panel is drawn as the device shows it, upright: a flipped axis (negative Lv
@@ -539,11 +546,11 @@ void WindowViewport::draw(const State& s, Scene& scene) {
                                 {Role::Discarded}});
 
     // The points, their images, and the lines joining them.
-    const int n = static_cast<int>(s.in.points.size());
+    const int n = static_cast<int>(s.in->points.size());
     const int active = s.phase == Phase::Done ? -1 : s.k;
     const bool to_ndc = s.last == Phase::ToNdc, to_device = s.last == Phase::ToDevice;
     if (n >= 3) {  // the points in order, so that a shape's distortion shows
-        scene.polygons.push_back({s.in.points, {Role::Subject, 1.5f}, true, false});
+        scene.polygons.push_back({s.in->points, {Role::Subject, 1.5f}, true, false});
         if (static_cast<int>(s.ndc.size()) == n) {
             std::vector<dvec2> a, b;
             for (dvec2 q : s.ndc) a.push_back(ndc_at(q));
@@ -556,7 +563,7 @@ void WindowViewport::draw(const State& s, Scene& scene) {
     }
     for (int k = 0; k < n; ++k) {
         const bool now_ndc = to_ndc && k == active, now_device = to_device && k == active;
-        const dvec2 p = s.in.points[k];
+        const dvec2 p = s.in->points[k];
         if (k < static_cast<int>(s.ndc.size())) {
             const dvec2 q = ndc_at(s.ndc[k]);
             scene.segments.push_back(

@@ -46,6 +46,7 @@
 
 #include "core/rng.hpp"
 #include "core/run.hpp"
+#include "core/shared.hpp"
 
 namespace cg {
 
@@ -94,7 +95,7 @@ struct WindowViewport {
     };
 
     struct State {
-        Input in;
+        Shared<Input> in;  // never changes during a run: copies of the state share it
         Phase phase = Phase::Aspect;  // the step to take next
         Phase last = Phase::Aspect;   // the step taken last (what narrate tells)
         double aspect_window = 0, aspect_viewport = 0;
@@ -107,15 +108,17 @@ struct WindowViewport {
     };
     // The state's heap memory, for the timeline's memory budget (see Run::bytes).
     static std::size_t bytes(const State& s) {
-        return heap_bytes(s.in.points) + heap_bytes(s.ndc) + heap_bytes(s.device);
+        return heap_bytes(s.ndc) + heap_bytes(s.device);  // the shared input is not counted
     }
 
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);  // advance, then narrate if info is given
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
+    static Result result(State&& s);  // moves the mapped points out (run_to_end)
     static void draw(const State& s, Scene& scene);
 
     // Exam practice (window_viewport_exam.cpp).

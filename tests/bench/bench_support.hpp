@@ -3,6 +3,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <vector>
+
+#include "core/shared.hpp"
 #include "io/registry.hpp"
 
 namespace cg::bench {
@@ -32,6 +35,15 @@ inline void step_and_picture(benchmark::State& state, const char* id,
         benchmark::DoNotOptimize(scene.polygons.data());
         benchmark::DoNotOptimize(info.narration.data());
     }
+}
+
+// The inputs of a state-machine benchmark, each made shareable once, as reading a file makes it:
+// the states share their immutable input (core/shared.hpp), so the timed loop starts each run
+// from a shared input with the algorithm's begin() (start() without re-validating), as the
+// plain function starts from a const reference.
+template <class A>
+std::vector<Shared<typename A::Input>> shared_inputs(const std::vector<typename A::Input>& v) {
+    return {v.begin(), v.end()};
 }
 
 }  // namespace cg::bench

@@ -38,14 +38,11 @@ void BM_ArbitraryAxis_Plain(benchmark::State& state) {
 BENCHMARK(BM_ArbitraryAxis_Plain)->Unit(benchmark::kMillisecond);
 
 void BM_ArbitraryAxis_StateMachine(benchmark::State& state) {
-    const auto& inputs = axes();
+    const auto inputs = cg::bench::shared_inputs<cg::ArbitraryAxis>(axes());
     for (auto _ : state) {
         double sum = 0;
-        for (const auto& in : inputs) {
-            cg::ArbitraryAxis::State s;  // start() without re-validating: inputs are known good
-            s.in = in;
-            sum += cg::run_to_end<cg::ArbitraryAxis>(std::move(s)).points.back().x;
-        }
+        for (const auto& in : inputs)
+            sum += cg::run_to_end<cg::ArbitraryAxis>(cg::ArbitraryAxis::begin(in)).points.back().x;
         benchmark::DoNotOptimize(sum);
     }
     state.SetItemsProcessed(state.iterations() * inputs.size());

@@ -108,14 +108,11 @@ void BM_Perspective_Plain(benchmark::State& state) {
 BENCHMARK(BM_Perspective_Plain)->Unit(benchmark::kMillisecond);
 
 void BM_Perspective_StateMachine(benchmark::State& state) {
-    const auto& inputs = cameras();
+    const auto inputs = cg::bench::shared_inputs<cg::Perspective>(cameras());
     for (auto _ : state) {
         double sum = 0;
-        for (const auto& in : inputs) {
-            cg::Perspective::State s;
-            s.in = in;
-            sum += cg::run_to_end<cg::Perspective>(std::move(s)).clip.back().w;
-        }
+        for (const auto& in : inputs)
+            sum += cg::run_to_end<cg::Perspective>(cg::Perspective::begin(in)).clip.back().w;
         benchmark::DoNotOptimize(sum);
     }
     state.SetItemsProcessed(state.iterations() * inputs.size());
@@ -149,14 +146,11 @@ void BM_NormalTransform_Plain(benchmark::State& state) {
 BENCHMARK(BM_NormalTransform_Plain)->Unit(benchmark::kMillisecond);
 
 void BM_NormalTransform_StateMachine(benchmark::State& state) {
-    const auto& inputs = normal_maps();
+    const auto inputs = cg::bench::shared_inputs<cg::NormalTransform>(normal_maps());
     for (auto _ : state) {
         double sum = 0;
-        for (const auto& in : inputs) {
-            cg::NormalTransform::State s;
-            s.in = in;
-            sum += cg::run_to_end<cg::NormalTransform>(std::move(s)).normal.x;
-        }
+        for (const auto& in : inputs)
+            sum += cg::run_to_end<cg::NormalTransform>(cg::NormalTransform::begin(in)).normal.x;
         benchmark::DoNotOptimize(sum);
     }
     state.SetItemsProcessed(state.iterations() * inputs.size());
@@ -208,14 +202,11 @@ void BM_ChangeOfBasis_Plain(benchmark::State& state) {
 BENCHMARK(BM_ChangeOfBasis_Plain)->Unit(benchmark::kMillisecond);
 
 void BM_ChangeOfBasis_StateMachine(benchmark::State& state) {
-    const auto& inputs = frame_pairs();
+    const auto inputs = cg::bench::shared_inputs<cg::ChangeOfBasis>(frame_pairs());
     for (auto _ : state) {
         double sum = 0;
-        for (const auto& in : inputs) {
-            cg::ChangeOfBasis::State s;
-            s.in = in;
-            sum += cg::run_to_end<cg::ChangeOfBasis>(std::move(s)).points.back().x;
-        }
+        for (const auto& in : inputs)
+            sum += cg::run_to_end<cg::ChangeOfBasis>(cg::ChangeOfBasis::begin(in)).points.back().x;
         benchmark::DoNotOptimize(sum);
     }
     state.SetItemsProcessed(state.iterations() * inputs.size());

@@ -38,14 +38,11 @@ void BM_WindowViewport_Plain(benchmark::State& state) {
 BENCHMARK(BM_WindowViewport_Plain)->Unit(benchmark::kMillisecond);
 
 void BM_WindowViewport_StateMachine(benchmark::State& state) {
-    const auto& inputs = maps();
+    const auto inputs = cg::bench::shared_inputs<cg::WindowViewport>(maps());
     for (auto _ : state) {
         double sum = 0;
-        for (const auto& in : inputs) {
-            cg::WindowViewport::State s;  // start() without re-validating: inputs are known good
-            s.in = in;
-            sum += cg::run_to_end<cg::WindowViewport>(std::move(s)).device.back().x;
-        }
+        for (const auto& in : inputs)
+            sum += cg::run_to_end<cg::WindowViewport>(cg::WindowViewport::begin(in)).device.back().x;
         benchmark::DoNotOptimize(sum);
     }
     state.SetItemsProcessed(state.iterations() * inputs.size());
