@@ -134,12 +134,12 @@ VertexNormals::Prepared VertexNormals::prepare(const Input& in) {
         const auto& face = in.faces[k];
         const std::string f = "faces[" + std::to_string(k) + "]";
         if (face.size() < 3)
-            throw InputError(f, "a face needs at least 3 vertices (got " +
-                                    std::to_string(face.size()) + ")");
+            throw InputError(
+                f, "a face needs at least 3 vertices (got " + std::to_string(face.size()) + ")");
         corners += static_cast<long long>(face.size());
         if (corners > kMaxCorners)
-            throw InputError(f, "the faces list more than " + std::to_string(kMaxCorners) +
-                                    " corners in all");
+            throw InputError(
+                f, "the faces list more than " + std::to_string(kMaxCorners) + " corners in all");
         for (std::size_t j = 0; j < face.size(); ++j)
             if (face[j] < 0 || face[j] >= nv)
                 throw InputError(f + "[" + std::to_string(j) + "]",
@@ -313,16 +313,16 @@ void VertexNormals::narrate(const State& s, StepInfo& info) {
             angles_deg.push_back(deg(f.angles[i]));
         }
         const std::size_t n_dropped = raw.size() - f.corners.size();
-        const std::string dropped =
-            n_dropped ? " (" + std::to_string(n_dropped) + " repeated index" +
-                            (n_dropped == 1 ? "" : "es") +
-                            " dropped: a zero-length edge has no direction)"
-                      : "";
+        const std::string dropped = n_dropped
+                                        ? " (" + std::to_string(n_dropped) + " repeated index" +
+                                              (n_dropped == 1 ? "" : "es") +
+                                              " dropped: a zero-length edge has no direction)"
+                                        : "";
         if (!f.defined) {
             info.event = "face-degenerate";
             info.line = kLineNormal;
-            info.narration = "Face " + fname(k) + " (" + list + ")" + dropped + ": N = " +
-                             num(f.N, 4) +
+            info.narration = "Face " + fname(k) + " (" + list + ")" + dropped +
+                             ": N = " + num(f.N, 4) +
                              ", so its area is 0 and its normal is undefined; it adds nothing to "
                              "any vertex, under any weighting (no division by |N| = 0).";
             info.math = "N_{" + std::to_string(k) + "} = " + tex(f.N, 4) + ",\\quad A = 0";
@@ -338,13 +338,12 @@ void VertexNormals::narrate(const State& s, StepInfo& info) {
             f.newell ? "Newell's method, Σ (P_i − P0) × (P_(i+1) − P0) over its " +
                            std::to_string(f.corners.size()) + " corners,"
                      : "(P1 − P0) × (P2 − P0) = " +
-                           num(p.vertices[f.corners[1]] - p.vertices[f.corners[0]], 4) +
-                           " × " +
+                           num(p.vertices[f.corners[1]] - p.vertices[f.corners[0]], 4) + " × " +
                            num(p.vertices[f.corners[2]] - p.vertices[f.corners[0]], 4);
         info.narration = "Face " + fname(k) + " (" + list + ")" + dropped + ": N = " + how +
-                         (f.newell ? " gives " : " = ") + num(f.N, 4) + ", area |N|/2 = " +
-                         num(f.area, 4) + ", n_f = " + num(f.normal, 4) + "; angles " + angles +
-                         ".";
+                         (f.newell ? " gives " : " = ") + num(f.N, 4) +
+                         ", area |N|/2 = " + num(f.area, 4) + ", n_f = " + num(f.normal, 4) +
+                         "; angles " + angles + ".";
         info.math = "N = " + tex(f.N, 4) + ",\\quad A = " + tex(f.area, 4) +
                     ",\\quad n_f = " + tex(f.normal, 4);
         info.vars = {{"face", static_cast<long long>(k)},
@@ -361,8 +360,7 @@ void VertexNormals::narrate(const State& s, StepInfo& info) {
     std::string zero;
     for (std::size_t i = 0; i < vs.zero_area_faces.size(); ++i)
         zero += (i ? ", " : "") + fname(vs.zero_area_faces[i]);
-    const std::string zero_note =
-        zero.empty() ? "" : " (" + zero + " without area, left out)";
+    const std::string zero_note = zero.empty() ? "" : " (" + zero + " without area, left out)";
     info.vars = {{"vertex", static_cast<long long>(v)},
                  {"faces", static_cast<long long>(vs.faces.size())}};
     if (vs.faces.empty()) {
@@ -379,11 +377,11 @@ void VertexNormals::narrate(const State& s, StepInfo& info) {
     bool cancelled = false;
     std::string parts, math;
     for (int w = 0; w < 3; ++w) {
-        parts += std::string(w ? "; " : "") + kName[w] + " " + kSum[w] + " = " +
-                 num(vs.sum[w], 4) + " → " +
+        parts += std::string(w ? "; " : "") + kName[w] + " " + kSum[w] + " = " + num(vs.sum[w], 4) +
+                 " → " +
                  (vs.normal[w] ? num(*vs.normal[w], 4) : std::string("undefined (it cancels)"));
-        math += std::string(w ? ",\\quad " : "") + "n^{\\text{" + kName[w] + "}} = " +
-                (vs.normal[w] ? tex(*vs.normal[w], 4) : std::string("\\text{undefined}"));
+        math += std::string(w ? ",\\quad " : "") + "n^{\\text{" + kName[w] +
+                "}} = " + (vs.normal[w] ? tex(*vs.normal[w], 4) : std::string("\\text{undefined}"));
         cancelled = cancelled || !vs.normal[w];
     }
     info.event = cancelled ? "vertex-cancelled" : "vertex";
@@ -405,8 +403,8 @@ void VertexNormals::narrate(const State& s, StepInfo& info) {
     const char* const kSumVar[3] = {"sum_unweighted", "sum_area", "sum_angle"};
     for (int w = 0; w < 3; ++w) {
         info.vars.push_back({kSumVar[w], vec(vs.sum[w])});
-        info.vars.push_back({kVar[w], vs.normal[w] ? Value{vec(*vs.normal[w])}
-                                                   : Value{std::string("undefined")}});
+        info.vars.push_back(
+            {kVar[w], vs.normal[w] ? Value{vec(*vs.normal[w])} : Value{std::string("undefined")}});
     }
 }
 
@@ -433,14 +431,14 @@ void VertexNormals::draw(const State& s, Scene& scene) {
         Face3 f;
         for (long long v : c) f.points.push_back(P[v]);
         const bool current = on_faces && int(k) == s.face;
-        const bool around = !on_faces && s.vertex >= 0 &&
-                            std::find(c.begin(), c.end(), s.vertex) != c.end();
+        const bool around =
+            !on_faces && s.vertex >= 0 && std::find(c.begin(), c.end(), s.vertex) != c.end();
         const bool worked = int(k) < static_cast<int>(s.faces.size());
         const bool degenerate = worked && !s.faces[k].defined;
-        f.style.role = current ? Role::Active
+        f.style.role = current      ? Role::Active
                        : degenerate ? Role::Discarded
-                       : around    ? Role::Window
-                                   : Role::Subject;
+                       : around     ? Role::Window
+                                    : Role::Subject;
         f.alpha = current || around ? 0.45f : 0.25f;
         scene.faces3.push_back(std::move(f));
     }
@@ -455,7 +453,9 @@ void VertexNormals::draw(const State& s, Scene& scene) {
             if (current) scene.labels3.push_back({c, "no normal (area 0)", {Role::Discarded}});
             continue;
         }
-        scene.segments3.push_back({c, c + len * f.normal, labels ? "n" + fname(k).substr(1) : "",
+        scene.segments3.push_back({c,
+                                   c + len * f.normal,
+                                   labels ? "n" + fname(k).substr(1) : "",
                                    {current ? Role::Active : Role::Neutral, current ? 3.f : 2.f},
                                    true});
     }
@@ -464,7 +464,8 @@ void VertexNormals::draw(const State& s, Scene& scene) {
     for (std::size_t v = 0; v < P.size(); ++v) {
         const bool current = !on_faces && int(v) == s.vertex;
         const bool focus = p.has_focus && p.focus_vertex == static_cast<long long>(v);
-        scene.points3.push_back({P[v], labels || current ? vname(v) : "",
+        scene.points3.push_back({P[v],
+                                 labels || current ? vname(v) : "",
                                  {current ? Role::Active : Role::Neutral},
                                  current ? 7.f : 4.f});
         if (static_cast<int>(v) >= static_cast<int>(s.vertices.size())) continue;
@@ -475,9 +476,11 @@ void VertexNormals::draw(const State& s, Scene& scene) {
             if (current) label = weighting_id(Weighting(w));
             if (focus && int(p.focus_weighting) == w)
                 label = std::string(weighting_id(Weighting(w))) + " " + num(*vs.normal[w], 3);
-            scene.segments3.push_back(
-                {P[v], P[v] + (1.2 * len) * *vs.normal[w], label,
-                 {kRole[w], current ? 3.f : 2.f}, true});
+            scene.segments3.push_back({P[v],
+                                       P[v] + (1.2 * len) * *vs.normal[w],
+                                       label,
+                                       {kRole[w], current ? 3.f : 2.f},
+                                       true});
         }
         if (current && vs.faces.empty())
             scene.labels3.push_back({P[v], "no faces: normal undefined", {Role::Discarded}});

@@ -87,7 +87,7 @@ struct VertexNormals {
 
     // One vertex, worked out.
     struct VertexSums {
-        std::vector<int> faces;  // the faces with a normal around it, in face order
+        std::vector<int> faces;            // the faces with a normal around it, in face order
         std::vector<int> zero_area_faces;  // ... and those without one
         std::array<glm::dvec3, 3> sum{};   // per Weighting: Σ w_f n_f (area: Σ N_f)
         std::array<double, 3> scale{};     // per Weighting: Σ |w_f n_f| (for the cancel test)

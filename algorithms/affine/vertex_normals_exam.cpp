@@ -28,8 +28,8 @@ VertexNormals::Input VertexNormals::exam_input(Rng& rng) {
 std::string VertexNormals::question(const Input& in) {
     std::string vertices, faces;
     for (std::size_t v = 0; v < in.vertices.size(); ++v)
-        vertices += (v ? ", " : "") + std::string("V") + std::to_string(v) + " = " +
-                    num(in.vertices[v]);
+        vertices +=
+            (v ? ", " : "") + std::string("V") + std::to_string(v) + " = " + num(in.vertices[v]);
     for (std::size_t k = 0; k < in.faces.size(); ++k) {
         faces += (k ? ", " : "") + std::string("F") + std::to_string(k) + " = (";
         for (std::size_t i = 0; i < in.faces[k].size(); ++i)
@@ -46,8 +46,9 @@ std::string VertexNormals::question(const Input& in) {
     return "A pyramid has vertices " + vertices + " and faces " + faces +
            ", each counter-clockwise seen from outside (a triangle's normal is (P1 − P0) × (P2 − "
            "P0), the quad's by Newell's method). Give the unit normal of V" +
-           std::to_string(in.focus_vertex) + " as " + how + " over the faces around it, normalised " +
-           "(vertex_normals/" + w + "/" + std::to_string(in.focus_vertex) + ").";
+           std::to_string(in.focus_vertex) + " as " + how +
+           " over the faces around it, normalised " + "(vertex_normals/" + w + "/" +
+           std::to_string(in.focus_vertex) + ").";
 }
 
 std::vector<std::string> VertexNormals::answer_fields(const Input& in) {

@@ -151,11 +151,11 @@ Input random_mesh(cg::Rng& rng) {
     Input in;
     const int nv = int(rng.integer(3, 12));
     for (int v = 0; v < nv; ++v)
-        in.vertices.push_back({double(rng.integer(-5, 5)), double(rng.integer(-5, 5)),
-                               double(rng.integer(-5, 5))});
+        in.vertices.push_back(
+            {double(rng.integer(-5, 5)), double(rng.integer(-5, 5)), double(rng.integer(-5, 5))});
     if (rng.chance(0.3)) {  // three collinear vertices, a sure zero-area triangle
         const dvec3 a = in.vertices[0], d{double(rng.integer(-2, 2)), double(rng.integer(-2, 2)),
-                                         double(rng.integer(-2, 2))};
+                                          double(rng.integer(-2, 2))};
         in.vertices[1] = a + d;
         in.vertices[2] = a + 2.0 * d;
         in.faces.push_back({0, 1, 2});
@@ -198,9 +198,11 @@ const cg::Lesson& lesson() {
 
 Input cube_quads() {
     std::vector<dvec3> v;
-    for (int i = 0; i < 8; ++i) v.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
+    for (int i = 0; i < 8; ++i)
+        v.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
     // Counter-clockwise seen from outside.
-    return mesh(v, {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}});
+    return mesh(
+        v, {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}});
 }
 
 }  // namespace
@@ -220,7 +222,8 @@ TEST_CASE("vertex-normals: a cube of quads gives (±1, ±1, ±1)/√3 under ever
     }
     for (std::size_t v = 0; v < 8; ++v) {
         CAPTURE(v);
-        for (int w = 0; w < 3; ++w) check_near(r.vertices[v].normal[w], unit(in.vertices[v]), 1e-15);
+        for (int w = 0; w < 3; ++w)
+            check_near(r.vertices[v].normal[w], unit(in.vertices[v]), 1e-15);
         CHECK(r.vertices[v].faces.size() == 3);
     }
 }
@@ -275,7 +278,8 @@ TEST_CASE("vertex-normals: a square pyramid, worked by hand", "[affine][vertex-n
     check_near(r.vertices[2].normal[0], unit(dvec3(s, s, 2 * s - 1)));
     check_near(r.vertices[2].normal[1], unit(dvec3(1, 1, -2)));  // √2·n1 + √2·n2 + 4·n_base
     const double theta = std::acos(1 / std::sqrt(3.0));
-    check_near(r.vertices[2].normal[2], unit(dvec3(theta * s, theta * s, 2 * theta * s - M_PI / 2)));
+    check_near(r.vertices[2].normal[2],
+               unit(dvec3(theta * s, theta * s, 2 * theta * s - M_PI / 2)));
     CHECK(r.faces[1].angles[1] == Approx(theta));
 }
 
@@ -283,7 +287,8 @@ TEST_CASE("vertex-normals: the long thin face parts the three weightings",
           "[affine][vertex-normals]") {
     // The example: F0 = (V0, V1, V2) in z = 0, area 2, 90° at V0; F1 = (V0, V2, V3) the sliver
     // in x = 0, N = (0, 2, 0) × (0, −8, 0.5) = (1, 0, 0), area ½, angle π − atan(1/16) at V0.
-    const auto r = cg::test::result_of("vertex-normals", cg::test::algorithm("vertex-normals").example());
+    const auto r =
+        cg::test::result_of("vertex-normals", cg::test::algorithm("vertex-normals").example());
     const auto& vn = r["vertex_normals"];
     auto at = [](const cg::json& j) { return dvec3(j[0], j[1], j[2]); };
     const double big = M_PI - std::atan(1.0 / 16);
@@ -409,11 +414,13 @@ TEST_CASE("vertex-normals: stepping equals compute, copies finish alike, traces 
     }
 }
 
-TEST_CASE("vertex-normals: degenerate meshes — zero area, isolated vertices, repeats, opposite "
-          "windings",
-          "[affine][vertex-normals]") {
+TEST_CASE(
+    "vertex-normals: degenerate meshes — zero area, isolated vertices, repeats, opposite "
+    "windings",
+    "[affine][vertex-normals]") {
     SECTION("a zero-area face has no normal and adds nothing") {
-        const auto t = run(R"({"vertices": [[0,0,0],[1,0,0],[0,1,0],[2,0,0]], "faces": [[0,1,2],[0,1,3]]})");
+        const auto t =
+            run(R"({"vertices": [[0,0,0],[1,0,0],[0,1,0],[2,0,0]], "faces": [[0,1,2],[0,1,3]]})");
         CHECK(t.result["face_normals"][1].is_null());
         CHECK(t.result["face_areas"][1] == 0.0);
         CHECK(t.result["undefined_faces"] == cg::json::parse("[1]"));
@@ -428,27 +435,32 @@ TEST_CASE("vertex-normals: degenerate meshes — zero area, isolated vertices, r
         CHECK(t.steps.back().event == "vertex-isolated");
     }
     SECTION("an isolated vertex is null") {
-        const auto r = res(R"({"vertices": [[0,0,0],[1,0,0],[0,1,0],[5,5,5]], "faces": [[0,1,2]]})");
+        const auto r =
+            res(R"({"vertices": [[0,0,0],[1,0,0],[0,1,0],[5,5,5]], "faces": [[0,1,2]]})");
         CHECK(r["vertex_normals"]["angle"][3].is_null());
         CHECK(r["vertex_normals"]["area"][2] == cg::json::parse("[0.0, 0.0, 1.0]"));
         const auto none = res(R"({"vertices": [[1,2,3]], "faces": []})");
         CHECK(none["vertex_normals"]["unweighted"][0].is_null());
     }
     SECTION("repeats in a row are dropped; a repeat apart is refused") {
-        const auto r = run(R"({"vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]], "faces": [[0,1,1,2,3,0]]})");
+        const auto r =
+            run(R"({"vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]], "faces": [[0,1,1,2,3,0]]})");
         CHECK(r.result["corner_angles_deg"][0].size() == 4);
         CHECK(r.result["face_normals"][0] == cg::json::parse("[0.0, 0.0, 1.0]"));
         CHECK_THAT(r.steps[0].narration, Catch::Contains("2 repeated indexes dropped"));
         const auto tri = res(R"({"vertices": [[0,0,0],[1,0,0],[1,1,0]], "faces": [[0,1,0]]})");
         CHECK(tri["face_normals"][0].is_null());
-        CHECK_THAT(cg::test::error_of("vertex-normals",
-                                      R"({"vertices": [[0,0,0],[1,0,0],[1,1,0]], "faces": [[0,1,0,2]]})"),
-                   Catch::StartsWith("faces[0][2]: repeats vertex 0 of faces[0][0] apart from it"));
+        CHECK_THAT(
+            cg::test::error_of("vertex-normals",
+                               R"({"vertices": [[0,0,0],[1,0,0],[1,1,0]], "faces": [[0,1,0,2]]})"),
+            Catch::StartsWith("faces[0][2]: repeats vertex 0 of faces[0][0] apart from it"));
     }
     SECTION("opposite windings cancel") {
-        const auto t = run(R"({"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2],[0,2,1]]})");
+        const auto t =
+            run(R"({"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2],[0,2,1]]})");
         CHECK(t.result["face_normals"][1] == cg::json::parse("[-0.0, -0.0, -1.0]"));
-        for (const char* w : {"unweighted", "area", "angle"}) CHECK(t.result["vertex_normals"][w][0].is_null());
+        for (const char* w : {"unweighted", "area", "angle"})
+            CHECK(t.result["vertex_normals"][w][0].is_null());
         CHECK(t.steps[2].event == "vertex-cancelled");
         CHECK_THAT(t.steps[2].narration, Catch::Contains("cancels"));
     }
@@ -471,11 +483,16 @@ TEST_CASE("vertex-normals: bad input names the field", "[affine][vertex-normals]
                Catch::StartsWith("faces[0]: must be a face"));
     CHECK_THAT(error(R"({"vertices": [[0,0,0],[1e101,0,0],[0,1,0]], "faces": [[0,1,2]]})"),
                Catch::StartsWith("vertices[1][0]: must be within ±1e100"));
-    CHECK_THAT(error(R"({"vertices": [[0,0,0]], "faces": [], "focus": {"vertex": 1, "weighting": "area"}})"),
-               Catch::StartsWith("focus.vertex: must be a vertex index"));
-    CHECK_THAT(error(R"({"vertices": [[0,0,0]], "faces": [], "focus": {"vertex": 0, "weighting": "mean"}})"),
-               Catch::StartsWith("focus.weighting: must be"));
-    CHECK_THAT(error(R"({"vertices": [[0,0,0]], "faces": [], "normals": []})"), Catch::Contains("normals"));
+    CHECK_THAT(
+        error(
+            R"({"vertices": [[0,0,0]], "faces": [], "focus": {"vertex": 1, "weighting": "area"}})"),
+        Catch::StartsWith("focus.vertex: must be a vertex index"));
+    CHECK_THAT(
+        error(
+            R"({"vertices": [[0,0,0]], "faces": [], "focus": {"vertex": 0, "weighting": "mean"}})"),
+        Catch::StartsWith("focus.weighting: must be"));
+    CHECK_THAT(error(R"({"vertices": [[0,0,0]], "faces": [], "normals": []})"),
+               Catch::Contains("normals"));
     // NaN and infinity cannot be written in JSON; the typed input refuses them too.
     for (double bad : {std::nan(""), double(INFINITY), -double(INFINITY)}) {
         Input in = mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, bad}}, {{0, 1, 2}});
@@ -493,12 +510,14 @@ TEST_CASE("vertex-normals: huge and far-off coordinates stay finite and exact in
           "[affine][vertex-normals]") {
     // The largest allowed coordinates: the cross products reach ~10²⁰⁰, still finite.
     const double b = 1e100;
-    auto r = VertexNormals::compute(mesh({{-b, -b, 0}, {b, -b, 0}, {b, b, 0}, {-b, b, 0}}, {{0, 1, 2, 3}}));
+    auto r = VertexNormals::compute(
+        mesh({{-b, -b, 0}, {b, -b, 0}, {b, b, 0}, {-b, b, 0}}, {{0, 1, 2, 3}}));
     check_near(r.vertices[0].normal[1], dvec3(0, 0, 1), 0);
     CHECK(std::isfinite(r.faces[0].area));
     // A unit square far from the origin: P0 is moved to the origin first, so no digits are lost.
     const double o = 1e12;
-    r = VertexNormals::compute(mesh({{o, o, o}, {o + 1, o, o}, {o + 1, o + 1, o}, {o, o + 1, o}}, {{0, 1, 2, 3}}));
+    r = VertexNormals::compute(
+        mesh({{o, o, o}, {o + 1, o, o}, {o + 1, o + 1, o}, {o, o + 1, o}}, {{0, 1, 2, 3}}));
     CHECK(r.faces[0].area == 1.0);
     check_near(r.vertices[2].normal[2], dvec3(0, 0, 1), 0);
 }

@@ -21,7 +21,8 @@ VertexNormals::Input sphere(int slices, int stacks) {
     for (int j = 1; j < stacks; ++j)
         for (int i = 0; i < slices; ++i) {
             const double th = 2 * pi * i / slices, ph = pi * j / stacks;
-            in.vertices.push_back({std::sin(ph) * std::cos(th), std::sin(ph) * std::sin(th), -std::cos(ph)});
+            in.vertices.push_back(
+                {std::sin(ph) * std::cos(th), std::sin(ph) * std::sin(th), -std::cos(ph)});
         }
     in.vertices.push_back({0, 0, 1});
     auto at = [&](int j, int i) { return 1 + (j - 1) * slices + (i % slices); };
@@ -30,7 +31,8 @@ VertexNormals::Input sphere(int slices, int stacks) {
         for (int i = 0; i < slices; ++i)
             in.faces.push_back({at(j, i), at(j, i + 1), at(j + 1, i + 1), at(j + 1, i)});
     const long long top = static_cast<long long>(in.vertices.size()) - 1;
-    for (int i = 0; i < slices; ++i) in.faces.push_back({top, at(stacks - 1, i), at(stacks - 1, i + 1)});
+    for (int i = 0; i < slices; ++i)
+        in.faces.push_back({top, at(stacks - 1, i), at(stacks - 1, i + 1)});
     return in;
 }
 
