@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "affine/vertex_normals.hpp"
 #include "core/format.hpp"
 #include "raster/orient2d.hpp"
 #include "rays/quadric.hpp"  // unit()
@@ -320,31 +321,36 @@ bool has_area(const std::array<dvec3, 3>& p) {
     return orient2d(xy(p[0]), xy(p[1]), xy(p[2])) != 0;
 }
 
-struct VertexNormals {
+struct MeshNormals {
     std::vector<dvec3> normals;  // unit; 0 for a vertex of no triangle with area
     std::vector<bool> lit;       // the vertex belongs to a triangle with area
 };
 
 // The unit vertex normals: given, or the area-weighted average of the faces around each
 // vertex. Throws when a needed average is zero.
-VertexNormals vertex_normals(const Input& in) {
+MeshNormals vertex_normals(const Input& in) {
     const auto& mesh = in.mesh;
-    VertexNormals out;
+    MeshNormals out;
     out.normals.assign(mesh.vertices.size(), dvec3(0.0));
     out.lit.assign(mesh.vertices.size(), false);
     if (in.model == Model::Flat) return out;
+    // The faces' N, turned to the viewer (0: no area on the screen, left out).
+    std::vector<dvec3> N(mesh.triangles.size(), dvec3(0.0));
     for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
         const auto p = corners(in, static_cast<long long>(k));
         if (!has_area(p)) continue;
-        const dvec3 n = mesh.normals.empty() ? face_cross(p) : dvec3(0.0);
-        for (long long v : mesh.triangles[k]) {
-            out.lit[v] = true;
-            out.normals[v] += n;
-        }
+        if (mesh.normals.empty()) N[k] = face_cross(p);
+        for (long long v : mesh.triangles[k]) out.lit[v] = true;
     }
+    // No normals given: vertex-normals' area weighting (affine/vertex_normals.hpp).
+    if (mesh.normals.empty())
+        out.normals = cg::VertexNormals::area_weighted(mesh.vertices.size(), mesh.triangles, N);
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        if (!out.lit[v]) continue;
-        out.normals[v] = unit(mesh.normals.empty() ? out.normals[v] : mesh.normals[v]);
+        if (!out.lit[v]) {
+            out.normals[v] = dvec3(0.0);
+            continue;
+        }
+        if (!mesh.normals.empty()) out.normals[v] = unit(mesh.normals[v]);
         if (out.normals[v] == dvec3(0.0))
             throw InputError("mesh.vertices" + index_text(static_cast<long long>(v)),
                              "its normal, the area-weighted average of its faces' normals, comes "
@@ -515,7 +521,7 @@ bool Shading::Image::operator==(const Image& o) const {
 
 Shading::State Shading::start(const Input& in) {
     check_input(in);
-    VertexNormals vn = vertex_normals(in);
+    MeshNormals vn = vertex_normals(in);
     State s;
     s.in = Shared<Input>(in);
     const auto pixel = chosen_pixel(in);
@@ -623,7 +629,7 @@ void Shading::step(State& s, StepInfo* info) {
 // Flattened like run_to_end, so that the comparison is between two fully inlined loops.
 [[gnu::flatten]] Shading::Result Shading::render(const Input& in) {
     check_input(in);
-    const VertexNormals vn = vertex_normals(in);
+    const MeshNormals vn = vertex_normals(in);
     Result r;
     r.model = in.model;
     r.width = static_cast<int>(in.width), r.height = static_cast<int>(in.height);

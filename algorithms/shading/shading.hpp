@@ -31,7 +31,8 @@
 //     Vertex normals are the given ones, normalised, or else the area-weighted average of the
 //     face normals around the vertex: Σ n_f over the faces with area on the screen (the cross
 //     product's length is twice the face's area, so the sum weighs each face by its area),
-//     then normalised. A vertex whose average comes out zero is an error naming it.
+//     then normalised — vertex-normals' area weighting, VertexNormals::area_weighted
+//     (affine/vertex_normals.hpp). A vertex whose average comes out zero is an error naming it.
 //   - Phong: the normal at a pixel is normalise(Σ λ_k n_k) of the unit vertex normals; where
 //     that sum is zero (opposite normals given at the vertices) the face normal is used.
 //   - Colours are reported unclamped, as the lighting computes them (Gouraud interpolates the
