@@ -154,6 +154,9 @@ void Radiosity::validate(const Input& in) {
         if (!finite3(s.emission) || s.emission.x < 0 || s.emission.y < 0 || s.emission.z < 0)
             throw InputError(f + ".emission", "must be finite and non-negative in every channel (got " +
                                                   num(s.emission) + ")");
+        if (max_abs(s.emission) > 1e100)  // B stays finite: it is at most E / (1 − ρ F)
+            throw InputError(f + ".emission", "must be at most 1e100 in every channel (got " +
+                                                  num(s.emission) + ")");
         if (!finite3(s.reflectance))
             throw InputError(f + ".reflectance", "must be finite (got " + num(s.reflectance) + ")");
         for (int c = 0; c < 3; ++c)

@@ -38,8 +38,8 @@
 // non-emitting patch (of any patch when all emit), clamped to 1 and raised to 1/2.2.
 //
 // Refused: no surfaces or more than kMaxPatches after subdivision, a disc or point patch, a
-// zero-area or malformed patch (validate_patch), E or ρ not finite, E < 0, ρ outside [0, 1] or
-// a divergent ρ = 1 (above), subdivision outside 1..32, tolerance not positive, max_steps
+// zero-area or malformed patch (validate_patch), E or ρ not finite, E < 0 or above 1e100, ρ
+// outside [0, 1] or a divergent ρ = 1 (above), subdivision outside 1..32, tolerance not positive, max_steps
 // outside 1..100000, form-factor settings outside form-factor's limits, a camera whose position
 // equals its target or whose up is along the view, fov outside (0, 170), an image outside
 // 1..64 pixels a side.
