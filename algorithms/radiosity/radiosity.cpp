@@ -746,7 +746,7 @@ void Radiosity::draw(const State& s, cg::Scene& scene) {
     if (rows)
         for (std::size_t j = 0; j < n; ++j) fmax = std::max(fmax, s.F[std::size_t(s.row) * n + j]);
     for (std::size_t k = 0; k < n; ++k) {
-        Face3 f{outline(sc.patches[k]), {Role::Subject, 0.5f}, 0.9f, true, false};
+        Face3 f{outline(sc.patches[k]), {Role::Subject, 0.5f}, 0.9f, true, true};
         if (rows) {
             const double v = s.F[std::size_t(s.row) * n + k];
             f.style.rgba = grey(fmax > 0 ? std::sqrt(v / fmax) : 0);
@@ -782,8 +782,7 @@ void Radiosity::draw(const State& s, cg::Scene& scene) {
     img.rgba = image(sc, s.B);
     img.grid_lines = false;
     scene.grids.push_back(std::move(img));
-    scene.labels.push_back({{0, -1.0}, "from the camera, after step " + std::to_string(s.steps),
-                            {Role::Neutral}});
+    scene.labels.push_back({{0, -1.0}, "camera, step " + std::to_string(s.steps), {Role::Neutral}});
     // The residual plot: log10(residual) against the step, in a box as tall as the image.
     const double x0 = w + 2.0, pw = std::max(16.0, double(w)), ph = double(h);
     scene.polygons.push_back({{{x0, 0}, {x0 + pw, 0}, {x0 + pw, ph}, {x0, ph}}, {Role::Construction, 1.0f}});
@@ -800,7 +799,7 @@ void Radiosity::draw(const State& s, cg::Scene& scene) {
     scene.polygons.push_back(std::move(line));
     const double tol_y = ph * (std::log10(s.in->tolerance) - lo) / (hi - lo);
     scene.segments.push_back({{x0, tol_y}, {x0 + pw, tol_y}, "tolerance", {Role::Window, 1.0f, true}});
-    scene.labels.push_back({{x0, -1.0}, "log10 residual (" + num(s.residual, 3) + ")", {Role::Neutral}});
+    scene.labels.push_back({{x0, ph + 1.5}, "log10 residual " + num(s.residual, 3), {Role::Neutral}});
 }
 
 }  // namespace cg
