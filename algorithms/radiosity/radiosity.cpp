@@ -610,7 +610,7 @@ void narrate_shoot(const State& s, StepInfo& info) {
         num(s.residual, 4) +
         (s.converged ? " < tolerance: converged."
                      : s.phase == Phase::Done ? ": stopped at max_steps." : ".");
-    info.math = "\\Delta B_j \\mathrel{+}= \\rho_j F_{ji} \\Delta B_i,\\; F_{ji} = "
+    info.math = "\\Delta B_j += \\rho_j F_{ji} \\Delta B_i,\\; F_{ji} = "
                 "\\frac{A_i}{A_j}F_{ij} = " +
                 tex(f_ji, 5);
     info.vars = {{"shot", (long long)s.steps},   {"shooter", (long long)i},
@@ -759,47 +759,57 @@ void Radiosity::draw(const State& s, cg::Scene& scene) {
         scene.faces3.push_back(std::move(f));
     }
 
-    if (rows || s.steps == 0) {
-        if (n > kMaxMatrix) return;
+    // 2D, stacked so that the layout stays put from step to step: the residual plot at the
+    // bottom, the camera image above it, the matrix F on top.
+    const int w = s.in->camera.width, h = s.in->camera.height;
+    const double pw = double(w), ph = std::max(4.0, 0.5 * h);
+    const double image_y = ph + 4.5, matrix_y = image_y + h + 4.5;  // room for a caption each
+    if (n <= kMaxMatrix) {
         PixelGrid2 m;
+        m.origin = {0, matrix_y};
         m.width = m.height = int(n);
         m.rgba.assign(n * n, 0);
         double top = 0;
         for (double v : s.F) top = std::max(top, v);
         for (std::size_t i = 0; i < n && int(i) <= s.row; ++i)
             for (std::size_t j = 0; j < n; ++j)  // row i of F drawn at the top, as written
-                m.rgba[(n - 1 - i) * n + j] = grey(top > 0 ? 1 - std::sqrt(s.F[i * n + j] / top) : 1);
+                m.rgba[(n - 1 - i) * n + j] =
+                    grey(top > 0 ? 1 - std::sqrt(s.F[i * n + j] / top) : 1);
         m.grid_lines = n <= 32;
         scene.grids.push_back(std::move(m));
-        scene.labels.push_back({{0, -1.0}, "form factors F_ij (row i from the top; dark: large)",
-                                {Role::Neutral}});
-        return;
+        scene.labels.push_back(
+            {{0, matrix_y + double(n) + 1.5}, "F_ij (dark: large)", {Role::Neutral}});
     }
-    const int w = s.in->camera.width, h = s.in->camera.height;
     PixelGrid2 img;
+    img.origin = {0, image_y};
     img.width = w;
     img.height = h;
     img.rgba = image(sc, s.B);
     img.grid_lines = false;
     scene.grids.push_back(std::move(img));
-    scene.labels.push_back({{0, -1.0}, "camera, step " + std::to_string(s.steps), {Role::Neutral}});
-    // The residual plot: log10(residual) against the step, in a box as tall as the image.
-    const double x0 = w + 2.0, pw = std::max(16.0, double(w)), ph = double(h);
-    scene.polygons.push_back({{{x0, 0}, {x0 + pw, 0}, {x0 + pw, ph}, {x0, ph}}, {Role::Construction, 1.0f}});
+    scene.labels.push_back({{0, image_y + h + 1.5},
+                            "camera, step " + std::to_string(s.steps), {Role::Neutral}});
+    // The residual plot: log10(residual) against the step.
+    scene.polygons.push_back({{{0, 0}, {pw, 0}, {pw, ph}, {0, ph}}, {Role::Construction, 1.0f}});
     double lo = std::log10(s.in->tolerance), hi = lo + 1;
     for (double r : s.history)
         if (r > 0) hi = std::max(hi, std::log10(r)), lo = std::min(lo, std::log10(r));
-    Polygon2 line{{}, {Role::Active, 2.0f}, false, false};
-    const double count = std::max<double>(1, double(s.history.size() - 1));
-    for (std::size_t q = 0; q < s.history.size(); ++q) {
-        const double y = s.history[q] > 0 ? std::log10(s.history[q]) : lo;
-        line.points.push_back({x0 + pw * double(q) / count, ph * (y - lo) / (hi - lo)});
+    if (!s.history.empty()) {
+        Polygon2 line{{}, {Role::Active, 2.0f}, false, false};
+        const double count = std::max<double>(1, double(s.history.size() - 1));
+        for (std::size_t q = 0; q < s.history.size(); ++q) {
+            const double y = s.history[q] > 0 ? std::log10(s.history[q]) : lo;
+            line.points.push_back({pw * double(q) / count, ph * (y - lo) / (hi - lo)});
+        }
+        if (line.points.size() == 1) line.points.push_back(line.points[0] + glm::dvec2(0.01, 0));
+        scene.polygons.push_back(std::move(line));
     }
-    if (line.points.size() == 1) line.points.push_back(line.points[0] + glm::dvec2(0.01, 0));
-    scene.polygons.push_back(std::move(line));
     const double tol_y = ph * (std::log10(s.in->tolerance) - lo) / (hi - lo);
-    scene.segments.push_back({{x0, tol_y}, {x0 + pw, tol_y}, "tolerance", {Role::Window, 1.0f, true}});
-    scene.labels.push_back({{x0, ph + 1.5}, "log10 residual " + num(s.residual, 3), {Role::Neutral}});
+    scene.segments.push_back({{0, tol_y}, {pw, tol_y}, "", {Role::Window, 1.0f, true}});
+    scene.labels.push_back({{0, ph + 1.5},
+                            "log10 residual" + (s.history.empty() ? std::string()
+                                                                   : " " + num(s.residual, 3)),
+                            {Role::Neutral}});
 }
 
 }  // namespace cg

@@ -37,10 +37,10 @@ std::string Radiosity::question(const Input& in) {
     const double a = p0.b.x, b = p0.c.y, c = p1.b.z;
     const double f01 = ff::analytic(p0, p1).value, f02 = ff::analytic(p0, p2).value;
     auto rgb = [](const glm::dvec3& v) { return num(v, 4); };
-    return "Three patches: patch 0 is an " + num(a) + " × " + num(b) +
-           " floor emitting E_0 = " + rgb(in.surfaces[0].emission) + "; patch 1 is an " + num(a) +
+    return "Three patches: patch 0 is a " + num(a) + " × " + num(b) +
+           " floor emitting E_0 = " + rgb(in.surfaces[0].emission) + "; patch 1 is a " + num(a) +
            " × " + num(c) + " wall standing on its edge of length " + num(a) +
-           "; patch 2 is an " + num(a) + " × " + num(b) + " ceiling at height " + num(c) +
+           "; patch 2 is a " + num(a) + " × " + num(b) + " ceiling at height " + num(c) +
            ". Reflectances ρ_0 = " + rgb(in.surfaces[0].reflectance) + ", ρ_1 = " +
            rgb(in.surfaces[1].reflectance) + ", ρ_2 = " + rgb(in.surfaces[2].reflectance) +
            ". The form factors from the floor are F_01 = " + num(f01, 5) + " and F_02 = " +

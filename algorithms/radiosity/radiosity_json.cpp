@@ -234,7 +234,7 @@ struct JsonIo<Radiosity> {
                      {{"position", {0.5, 0.5, 0.95}},
                       {"target", {0.5, 0.5, 0}},
                       {"up", {0, 1, 0}},
-                      {"fov_deg", 60},
+                      {"fov_deg", 80},
                       {"width", 24},
                       {"height", 24}}}};
     }

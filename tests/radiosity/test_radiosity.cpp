@@ -475,15 +475,16 @@ TEST_CASE("radiosity: the picture — patches by B, the matrix, the camera image
     cg::Scene rows;
     Radiosity::draw(s, rows);
     CHECK(rows.faces3.size() == 28);
-    REQUIRE(rows.grids.size() == 1);
+    REQUIRE(rows.grids.size() == 2);  // the matrix and the camera image
     CHECK(rows.grids[0].width == 28);
+    CHECK(rows.polygons.size() == 1);  // the residual plot's empty box
     while (s.phase == Radiosity::Phase::FormFactors) Radiosity::step(s, nullptr);
     Radiosity::step(s, nullptr);
     cg::Scene solve;
     Radiosity::draw(s, solve);
-    REQUIRE(solve.grids.size() == 1);
-    CHECK(solve.grids[0].width == in.camera.width);
-    CHECK(solve.grids[0].rgba == Radiosity::image(*s.scene, s.B));
+    REQUIRE(solve.grids.size() == 2);
+    CHECK(solve.grids[1].width == in.camera.width);
+    CHECK(solve.grids[1].rgba == Radiosity::image(*s.scene, s.B));
     CHECK(solve.polygons.size() == 2);
     // The shooter is the lamp (patches 24..27), drawn as the active patch.
     CHECK(s.shooter >= 24);
