@@ -88,10 +88,14 @@ const Spec& Radiosity::spec() {
                     {"shoot", "F_ji", "copy:F_ij",
                      "used F_ij for the shot from i to j: forgot reciprocity, F_ji = A_i F_ij / "
                      "A_j"},
-                    {"jacobi-sweep", "B_k", "copy:B_k_without_E",
-                     "forgot the emission: B_k = ρ_k Σ F_kj B_j without E_k"},
-                    {"gauss-seidel-sweep", "B_k", "copy:B_k_without_E",
-                     "forgot the emission: B_k = ρ_k Σ F_kj B_j without E_k"},
+                    {"jacobi-sweep", "B_k", "copy:B_k_without_rho",
+                     "forgot the reflectance: B_k = E_k + Σ F_kj B_j, the gathered light not "
+                     "multiplied by ρ_k"},
+                    {"gauss-seidel-sweep", "B_k", "copy:B_k_without_rho",
+                     "forgot the reflectance: B_k = E_k + Σ F_kj B_j, the gathered light not "
+                     "multiplied by ρ_k"},
+                    {"form-factor-row", "F_ji", "copy:F_ji_areas_swapped",
+                     "the areas the wrong way round in reciprocity: F_ji = A_j F_ij / A_i"},
                 },
             .costs = {"steps"},
             .variants = {{"jacobi", "/method", "\"jacobi\""},
@@ -526,7 +530,10 @@ void narrate_row(const State& s, StepInfo& info) {
                      " of surface " + std::to_string(sc.surface[std::size_t(i)]) + ", A_i = " +
                      num(sc.area[std::size_t(i)], 5) + ") by " + how +
                      ": the largest entry is F_" + std::to_string(i) + "," +
-                     std::to_string(best) + " = " + num(row[best], 5) + "; the row sums to " +
+                     std::to_string(best) + " = " + num(row[best], 5) + " (so by reciprocity F_" +
+                     std::to_string(best) + "," + std::to_string(i) + " = A_i F_ij / A_j = " +
+                     num(row[best] * sc.area[std::size_t(i)] / sc.area[best], 5) +
+                     "); the row sums to " +
                      num(sum, 6) + " (1 in a closed enclosure; the gap is the method's error)" +
                      (i > 0 ? "; reciprocity A_i F_ij = A_j F_ji holds against the rows before "
                               "to " + num(recip, 3)
@@ -538,6 +545,8 @@ void narrate_row(const State& s, StepInfo& info) {
                  {"row_sum", sum},
                  {"max_F_ij", row[best]},
                  {"j_max", (long long)best},
+                 {"F_ji", row[best] * sc.area[std::size_t(i)] / sc.area[best]},
+                 {"F_ji_areas_swapped", row[best] * sc.area[best] / sc.area[std::size_t(i)]},
                  {"reciprocity_error", recip}};
     if (n <= kMaxListed) info.vars.push_back({"F_i", std::vector<double>(row, row + n)});
 }
@@ -567,7 +576,7 @@ void narrate_sweep(const State& s, StepInfo& info) {
                  {"k", (long long)k},
                  {"gathered", rgb_list(w.gathered)},
                  {"B_k", rgb_list(bk)},
-                 {"B_k_without_E", rgb_list(without)},
+                 {"B_k_without_rho", rgb_list(sc.emission[k] + w.gathered)},
                  {"residual", s.residual},
                  {"converged", s.converged}};
 }
