@@ -21,59 +21,11 @@
 
 #include "io/registry.hpp"
 #include "radiosity/form_factor.hpp"
+#include "radiosity/patch_json.hpp"
 
 namespace cg {
 
 namespace {
-
-Patch read_patch(const Reader& r) {
-    const std::string type = r.string("type");
-    if (type == "rectangle") {
-        r.only({"type", "corner", "edge_u", "edge_v"});
-        return Patch::rectangle(r.point3("corner"), r.point3("edge_u"), r.point3("edge_v"));
-    }
-    if (type == "disc") {
-        r.only({"type", "center", "normal", "radius"});
-        return Patch::disc(r.point3("center"), r.point3("normal"), r.number("radius"));
-    }
-    if (type == "triangle") {
-        r.only({"type", "points"});
-        const auto pts = r.points3("points");
-        if (pts.size() != 3)
-            throw InputError(r.field("points"),
-                             "a triangle has 3 points (got " + std::to_string(pts.size()) + ")");
-        return Patch::triangle(pts[0], pts[1], pts[2]);
-    }
-    if (type == "point") {
-        r.only({"type", "center", "normal"});
-        return Patch::point(r.point3("center"), r.point3("normal"));
-    }
-    throw InputError(
-        r.field("type"),
-        "must be \"rectangle\", \"disc\", \"triangle\" or \"point\", got \"" + type + "\"");
-}
-
-json patch_json(const Patch& p) {
-    switch (p.type) {
-        case Patch::Type::Rectangle:
-            return json{{"type", "rectangle"},
-                        {"corner", nice_point(p.a)},
-                        {"edge_u", nice_point(p.b)},
-                        {"edge_v", nice_point(p.c)}};
-        case Patch::Type::Disc:
-            return json{{"type", "disc"},
-                        {"center", nice_point(p.a)},
-                        {"normal", nice_point(p.b)},
-                        {"radius", nice_number(p.radius)}};
-        case Patch::Type::Triangle:
-            return json{{"type", "triangle"},
-                        {"points", {nice_point(p.a), nice_point(p.b), nice_point(p.c)}}};
-        case Patch::Type::Point:
-            return json{
-                {"type", "point"}, {"center", nice_point(p.a)}, {"normal", nice_point(p.b)}};
-    }
-    return json();
-}
 
 json opt(const std::optional<double>& v) {
     return v ? json(*v) : json(nullptr);
