@@ -180,6 +180,13 @@ long long Reader::integer(const char* key) const {
     throw InputError(field(key), "must be an integer, got " + describe(v));
 }
 
+long long Reader::integer(const char* key, long long lo, long long hi, const std::string& why) const {
+    const long long v = integer(key);
+    if (v < lo || v > hi)
+        throw InputError(field(key), "must be " + why + " (got " + std::to_string(v) + ")");
+    return v;
+}
+
 bool Reader::boolean(const char* key) const {
     const json& v = get(key);
     if (!v.is_boolean()) throw InputError(field(key), "must be true or false, got " + describe(v));

@@ -38,6 +38,8 @@ public:
     double number(const char* key) const;  // finite number
     std::optional<double> optional_number(const char* key) const;
     long long integer(const char* key) const;
+    // An integer in [lo, hi]; otherwise "must be <why> (got v)".
+    long long integer(const char* key, long long lo, long long hi, const std::string& why) const;
     bool boolean(const char* key) const;
     std::string string(const char* key) const;
     glm::dvec2 point2(const char* key) const;

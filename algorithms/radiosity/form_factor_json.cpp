@@ -31,14 +31,6 @@ json opt(const std::optional<double>& v) {
     return v ? json(*v) : json(nullptr);
 }
 
-long long bounded(const Reader& r, const char* key, long long lo, long long hi,
-                  const std::string& why) {
-    const long long v = r.integer(key);
-    if (v < lo || v > hi)
-        throw InputError(r.field(key), "must be " + why + " (got " + std::to_string(v) + ")");
-    return v;
-}
-
 }  // namespace
 
 template <>
@@ -53,18 +45,18 @@ struct JsonIo<FormFactor> {
             const Reader h = r.object("hemicube");
             h.only({"resolution", "samples"});
             if (h.has("resolution"))
-                in.resolution = int(bounded(h, "resolution", 2, FormFactor::kMaxResolution,
+                in.resolution = int(h.integer("resolution", 2, FormFactor::kMaxResolution,
                                             "an even number of cells from 2 to 128"));
             if (h.has("samples"))
-                in.samples = int(bounded(h, "samples", 1, FormFactor::kMaxSamples, "from 1 to 8"));
+                in.samples = int(h.integer("samples", 1, FormFactor::kMaxSamples, "from 1 to 8"));
         }
         if (r.has("monte_carlo")) {
             const Reader m = r.object("monte_carlo");
             m.only({"rays", "seed"});
             if (m.has("rays"))
-                in.rays = bounded(m, "rays", 1, FormFactor::kMaxRays, "from 1 to 1000000");
+                in.rays = m.integer("rays", 1, FormFactor::kMaxRays, "from 1 to 1000000");
             if (m.has("seed"))
-                in.seed = std::uint64_t(bounded(m, "seed", 0, std::numeric_limits<long long>::max(),
+                in.seed = std::uint64_t(m.integer("seed", 0, std::numeric_limits<long long>::max(),
                                                 "a non-negative integer"));
         }
         if (r.has("enclosure")) {

@@ -27,14 +27,6 @@ namespace {
 using Method = Radiosity::Method;
 using FF = Radiosity::FormFactors;
 
-long long bounded(const Reader& r, const char* key, long long lo, long long hi,
-                  const std::string& why) {
-    const long long v = r.integer(key);
-    if (v < lo || v > hi)
-        throw InputError(r.field(key), "must be " + why + " (got " + std::to_string(v) + ")");
-    return v;
-}
-
 json rgb(const glm::dvec3& v) {
     return json::array({v.x, v.y, v.z});
 }
@@ -71,7 +63,7 @@ struct JsonIo<Radiosity> {
             in.surfaces.push_back(surface);
         }
         if (r.has("subdivision"))
-            in.subdivision = int(bounded(r, "subdivision", 1, Radiosity::kMaxSubdivision, "from 1 to 32"));
+            in.subdivision = int(r.integer("subdivision", 1, Radiosity::kMaxSubdivision, "from 1 to 32"));
         if (r.has("method")) {
             const std::string m = r.string("method");
             if (m == "jacobi")
@@ -102,19 +94,19 @@ struct JsonIo<Radiosity> {
                                          m + "\"");
             }
             if (f.has("resolution"))
-                in.resolution = int(bounded(f, "resolution", 2, Radiosity::kMaxResolution,
+                in.resolution = int(f.integer("resolution", 2, Radiosity::kMaxResolution,
                                             "an even number of cells from 2 to 128"));
             if (f.has("samples"))
-                in.samples = int(bounded(f, "samples", 1, Radiosity::kMaxSamples, "from 1 to 8"));
+                in.samples = int(f.integer("samples", 1, Radiosity::kMaxSamples, "from 1 to 8"));
             if (f.has("rays"))
-                in.rays = bounded(f, "rays", 1, Radiosity::kMaxRays, "from 1 to 100000");
+                in.rays = f.integer("rays", 1, Radiosity::kMaxRays, "from 1 to 100000");
             if (f.has("seed"))
-                in.seed = std::uint64_t(bounded(f, "seed", 0, std::numeric_limits<long long>::max(),
+                in.seed = std::uint64_t(f.integer("seed", 0, std::numeric_limits<long long>::max(),
                                                 "a non-negative integer"));
         }
         if (r.has("tolerance")) in.tolerance = r.number("tolerance");
         if (r.has("max_steps"))
-            in.max_steps = int(bounded(r, "max_steps", 1, Radiosity::kMaxSteps, "from 1 to 100000"));
+            in.max_steps = int(r.integer("max_steps", 1, Radiosity::kMaxSteps, "from 1 to 100000"));
         if (r.has("camera")) {
             const Reader c = r.object("camera");
             c.only({"position", "target", "up", "fov_deg", "width", "height"});
@@ -124,9 +116,9 @@ struct JsonIo<Radiosity> {
             if (c.has("up")) cam.up = c.point3("up");
             if (c.has("fov_deg")) cam.fov_deg = c.number("fov_deg");
             if (c.has("width"))
-                cam.width = int(bounded(c, "width", 1, Radiosity::kMaxImage, "from 1 to 64 pixels"));
+                cam.width = int(c.integer("width", 1, Radiosity::kMaxImage, "from 1 to 64 pixels"));
             if (c.has("height"))
-                cam.height = int(bounded(c, "height", 1, Radiosity::kMaxImage, "from 1 to 64 pixels"));
+                cam.height = int(c.integer("height", 1, Radiosity::kMaxImage, "from 1 to 64 pixels"));
         }
         return in;
     }
