@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
+#include "rays/quadric.hpp"  // unit(): v/|v| without overflow, 0 for 0
 
 namespace cg {
 
@@ -177,16 +178,6 @@ VertexNormals::Prepared VertexNormals::prepare(const Input& in) {
 
 // ---- [the arithmetic] -----------------------------------------------------------------------
 
-dvec3 VertexNormals::normalise(dvec3 v) {
-    // |v|² fits a double for every sum this algorithm makes (|v| ≤ 10²⁰⁶), except far below 1.
-    const double len2 = v.x * v.x + v.y * v.y + v.z * v.z;
-    if (len2 > 1e-290 && len2 < 1e290) return v / std::sqrt(len2);
-    const double m = std::max(std::max(std::fabs(v.x), std::fabs(v.y)), std::fabs(v.z));
-    if (m == 0) return dvec3(0.0);
-    v /= m;
-    return v / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-}
-
 FaceNormal VertexNormals::face_normal(const std::vector<dvec3>& vertices,
                                       std::vector<long long> corners) {
     FaceNormal f;
@@ -205,7 +196,7 @@ FaceNormal VertexNormals::face_normal(const std::vector<dvec3>& vertices,
     }
     f.defined = f.N != dvec3(0.0);
     f.area = norm(f.N) / 2;
-    f.normal = normalise(f.N);
+    f.normal = unit(f.N);
     for (std::size_t i = 0; i < n; ++i) {
         const dvec3 a = P(i + 1) - P(i), b = P(i + n - 1) - P(i);
         // A zero-length edge (two indices at one point) gives the corner no angle.
@@ -242,7 +233,7 @@ VertexSums VertexNormals::vertex_sums(const std::vector<FaceNormal>& faces,
     for (int w = 0; w < 3; ++w) {
         if (s.faces.empty()) continue;
         if (norm(s.sum[w]) <= kCancel * s.scale[w]) continue;  // cancelled (or all θ = 0)
-        s.normal[w] = normalise(s.sum[w]);
+        s.normal[w] = unit(s.sum[w]);
     }
     return s;
 }
@@ -255,7 +246,7 @@ std::vector<dvec3> VertexNormals::area_weighted(
         if (N[k] == dvec3(0.0)) continue;  // no area: contributes nothing
         for (long long v : triangles[k]) sum[static_cast<std::size_t>(v)] += N[k];
     }
-    for (dvec3& s : sum) s = normalise(s);
+    for (dvec3& s : sum) s = unit(s);
     return sum;
 }
 

@@ -148,7 +148,6 @@ struct VertexNormals {
     static std::vector<glm::dvec3> area_weighted(
         std::size_t vertex_count, const std::vector<std::array<long long, 3>>& triangles,
         const std::vector<glm::dvec3>& N);
-    static glm::dvec3 normalise(glm::dvec3 v);  // v/|v| without overflow; 0 for 0
 
   private:
     static Prepared prepare(const Input& in);

@@ -346,10 +346,7 @@ MeshNormals vertex_normals(const Input& in) {
     if (mesh.normals.empty())
         out.normals = cg::VertexNormals::area_weighted(mesh.vertices.size(), mesh.triangles, N);
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        if (!out.lit[v]) {
-            out.normals[v] = dvec3(0.0);
-            continue;
-        }
+        if (!out.lit[v]) continue;  // its faces have no area, so its sum stayed 0
         if (!mesh.normals.empty()) out.normals[v] = unit(mesh.normals[v]);
         if (out.normals[v] == dvec3(0.0))
             throw InputError("mesh.vertices" + index_text(static_cast<long long>(v)),
