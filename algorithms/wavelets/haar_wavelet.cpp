@@ -311,8 +311,13 @@ void HaarWavelet::validate(const Input& in) {
 
 HaarWavelet::State HaarWavelet::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+HaarWavelet::State HaarWavelet::begin(Shared<Input> shared) {
+    const Input& in = *shared;
     State s;
-    s.in = Shared<Input>(in);
+    s.in = std::move(shared);
     s.passes = Shared<std::vector<Pass>>(plan(in));
     s.c = in.data;
     if (s.passes->empty()) {  // n = 1: nothing to average

@@ -110,7 +110,8 @@ struct HaarWavelet {
 
     static const Spec& spec();
     static void validate(const Input& in);
-    static State start(const Input& in);
+    static State start(const Input& in);   // validates, then begin()
+    static State begin(Shared<Input> in);  // a fresh state for a valid input
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
