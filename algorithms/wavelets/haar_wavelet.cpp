@@ -728,7 +728,7 @@ void bars(Scene& scene, const Input& in, const std::vector<double>& v, int avera
     const int n = int(v.size());
     scene.segments.push_back(
         {{0, pl.base}, {double(n), pl.base}, "", {Role::Construction, 1.0f}, false});
-    scene.labels.push_back({{0, pl.base + 0.3}, title, {Role::Neutral}});
+    scene.labels.push_back({{n + 0.4, pl.base + 0.3}, title, {Role::Neutral}});  // to the right
     for (int i = 0; i < n; ++i) {
         const double x0 = i + 0.1, x1 = i + 0.9, y = pl.base + v[i] * pl.scale;
         const Role role = i < averages ? Role::Kept : Role::Entering;
@@ -788,7 +788,7 @@ void draw_1d(const State& s, Scene& scene) {
         title_before = "coefficients";
         title_after = "kept (dashed red: zeroed)";
     } else if (s.last == Phase::Summary) {
-        title_after = "x̃ (reconstruction)";
+        title_after = "reconstruction (grey ticks: the signal)";
     }
     bars(scene, in, before, started ? before_avg : n, top, nullptr, title_before);
     bars(scene, in, s.c, row_low[0], bottom, dropped ? &s.coefficients : nullptr, title_after);
@@ -852,7 +852,7 @@ void image(Scene& scene, const Input& in, const std::vector<double>& v, double x
             if (!row_low || is_average(in, *row_low, *col_low, at)) {
                 colour = grey(ahi > alo ? 255 * (v[at] - alo) / (ahi - alo) : 128);
             } else if (coefficients && (*coefficients)[at] != 0 && v[at] == 0) {
-                colour = 0xf0b8b0ffu;  // zeroed
+                colour = 0xa08080ffu;  // zeroed: a reddish mid grey (0 is mid grey)
             } else {  // details: mid grey ± √(|d| / max), to make small ones visible
                 const double t = dmax > 0 ? std::sqrt(std::fabs(v[at]) / dmax) : 0;
                 colour = grey(128 + (v[at] < 0 ? -127 : 127) * t);
@@ -891,7 +891,7 @@ void draw_2d(const State& s, Scene& scene) {
         scene.labels.push_back({{mid, below}, "kept coefficients", {Role::Kept}});
         image(scene, in, s.c, right, &row_low, &col_low, nullptr);
         scene.labels.push_back({{right, below},
-                                s.last == Phase::Summary ? "reconstruction x̃"
+                                s.last == Phase::Summary ? "reconstruction"
                                                          : "reconstruction under way",
                                 {Role::Entering}});
     }
@@ -934,7 +934,7 @@ void draw_2d(const State& s, Scene& scene) {
 // joined to the average and detail it became. Zeroed details are dashed red outlines at their
 // old height; at the end the input is drawn as grey ticks over the reconstruction.
 // 2D: the image, the coefficient image (averages in grey over their range, details as mid grey
-// ± √(|d| / max |d|) so that small ones show; zeroed ones pink) with the band boundaries in
+// ± √(|d| / max |d|) so that small ones show; zeroed ones reddish grey) with the band boundaries in
 // blue and this step's lines outlined, and during the reconstruction the kept coefficients
 // beside the image being rebuilt.
 void HaarWavelet::draw(const State& s, Scene& scene) {
