@@ -14,6 +14,7 @@
 //           "predicted_error": √Σ w c² of the dropped, "l2_error": ‖x − x̃‖₂, "max_error",
 //           "relative_error": l2_error / ‖x‖₂, "signal_norm": ‖x‖₂, "coefficient_norm": ‖c‖₂}
 #include <algorithm>
+#include <climits>
 
 #include "io/registry.hpp"
 #include "wavelets/haar_wavelet.hpp"
@@ -68,14 +69,14 @@ struct JsonIo<HaarWavelet> {
         if (r.has("signal")) {
             two_d = false;
             in.data = haar_json::numbers(r.get("signal"), r.field("signal"), "numbers");
-            in.n = int(std::min<std::size_t>(in.data.size(), 1 << 20));
+            in.n = int(std::min<std::size_t>(in.data.size(), INT_MAX));
         } else if (r.has("image")) {
             const json& rows = r.get("image");
             const std::string f = r.field("image");
             if (!rows.is_array())
                 throw InputError(f, "must be a list of rows (lists of numbers), got " +
                                         describe(rows));
-            in.n = int(std::min<std::size_t>(rows.size(), 1 << 20));
+            in.n = int(std::min<std::size_t>(rows.size(), INT_MAX));
             for (std::size_t k = 0; k < rows.size(); ++k) {
                 std::vector<double> row = haar_json::numbers(rows[k], element(f, k), "numbers (a row)");
                 if (row.size() != rows.size())
@@ -98,7 +99,11 @@ struct JsonIo<HaarWavelet> {
             }
             in.n = int(p.integer("size", 1, HaarWavelet::kMaxImage,
                                  "1 to " + std::to_string(HaarWavelet::kMaxImage) + " pixels"));
-            if (p.has("seed")) in.seed = std::uint64_t(p.integer("seed", 0, 1LL << 53, "0 to 2^53"));
+            if (p.has("seed")) {
+                if (in.pattern != "noise")
+                    throw InputError(p.field("seed"), "only the \"noise\" pattern is seeded");
+                in.seed = std::uint64_t(p.integer("seed", 0, 1LL << 53, "0 to 2^53"));
+            }
             if ((in.n & (in.n - 1)) != 0)
                 throw InputError(p.field("size"), "must be a power of two (1, 2, 4, 8, …), got " +
                                                       std::to_string(in.n));

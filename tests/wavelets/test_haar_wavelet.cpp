@@ -462,6 +462,9 @@ TEST_CASE("haar-wavelet: bad input names the field and the reason", "[wavelets][
     std::string big = "{\"signal\": [0";
     for (int i = 1; i < 2048; ++i) big += ", 0";
     CHECK(err(big + "]}") == "signal: has 2048 values; at most 1024 are stepped");
+    CHECK(err(R"({"pattern": {"name": "disc", "size": 8, "seed": 3}})") ==
+          "pattern.seed: only the \"noise\" pattern is seeded");
+    CHECK(err(R"({"pattern": {"name": "noise", "size": 8, "seed": 3}})") == "(accepted)");
     CHECK(err(R"({"signal": [4]})") == "(accepted)");
 }
 
