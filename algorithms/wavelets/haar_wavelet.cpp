@@ -230,7 +230,7 @@ const Spec& HaarWavelet::spec() {
             "compress: zero the details with |c| < threshold (or all but the largest)   ▷ "
             "error² = Σ w c² dropped",
             "reconstruct in reverse order:  c_2k ← s_k + d_k,  c_2k+1 ← s_k − d_k",
-            "report ‖x − x̃‖₂ and how many coefficients were kept",
+            "report ‖x − x′‖₂ and how many coefficients were kept",
         },
         {
             {"level", "one averaging and differencing level of the signal"},
@@ -534,7 +534,7 @@ void narrate_threshold(const State& s, StepInfo& info) {
                        : ", w the number of samples each one's basis function spans "
                          "(unnormalised coefficients are not weighted equally, so a small one "
                          "at a coarse level can cost more than a larger fine one).");
-    info.math = "\\lVert x - \\tilde x \\rVert_2 = \\sqrt{\\textstyle\\sum w\\, c^2} = " +
+    info.math = "\\lVert x - x' \\rVert_2 = \\sqrt{\\textstyle\\sum w\\, c^2} = " +
                 tex(s.predicted_error);
     info.vars = {{in.compress == Compress::Threshold ? "threshold" : "keep",
                   in.compress == Compress::Threshold ? in.threshold : in.keep},
@@ -586,8 +586,8 @@ void narrate_summary(const State& s, StepInfo& info) {
     const double rel = s.signal_norm > 0 ? s.l2_error / s.signal_norm : 0;
     info.narration =
         "Reconstructed " + std::string(two_d(in) ? "image" : "signal") +
-        (in.n <= 16 && !two_d(in) ? " " + list(s.c.data(), in.n) : "") + ": ‖x − x̃‖₂ = " +
-        num(s.l2_error) + " (relative " + num(rel, 4) + "), max |x − x̃| = " + num(s.max_error) +
+        (in.n <= 16 && !two_d(in) ? " " + list(s.c.data(), in.n) : "") + ": ‖x − x′‖₂ = " +
+        num(s.l2_error) + " (relative " + num(rel, 4) + "), max |x − x′| = " + num(s.max_error) +
         ". " + std::to_string(s.kept) + " of " + std::to_string(total) +
         " coefficients are non-zero" +
         (in.compress != Compress::None
@@ -596,7 +596,7 @@ void narrate_summary(const State& s, StepInfo& info) {
         (in.normalised ? " Normalised: ‖c‖₂ = " + num(s.coefficient_norm) + " = ‖x‖₂ = " +
                              num(s.signal_norm) + " (Parseval)."
                        : "");
-    info.math = "\\lVert x - \\tilde x \\rVert_2 = " + tex(s.l2_error);
+    info.math = "\\lVert x - x' \\rVert_2 = " + tex(s.l2_error);
     info.vars = {{"l2_error", s.l2_error},
                  {"max_error", s.max_error},
                  {"predicted_error", s.predicted_error},

@@ -50,7 +50,7 @@ std::string HaarWavelet::question(const Input& in) {
         if (in.compress == Compress::Threshold)
             q += " Then set every detail with |d| < " + num(in.threshold) +
                  " to 0, reconstruct, and give how many non-zero coefficients you zeroed (zeroed) "
-                 "and the L2 error ‖x − x̃‖₂ of the reconstruction (l2_error).";
+                 "and the L2 error ‖x − x′‖₂ of the reconstruction (l2_error).";
         return q;
     }
     std::string rows;
