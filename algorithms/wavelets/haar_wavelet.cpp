@@ -710,13 +710,6 @@ void averages_extent(const State& s, std::vector<int>& row_low, std::vector<int>
     }
 }
 
-bool is_average(const Input& in, const std::vector<int>& row_low, const std::vector<int>& col_low,
-                std::size_t at) {
-    if (in.mode == Mode::OneD) return int(at) < row_low[0];
-    const int r = int(at / in.n), c = int(at % in.n);
-    return c < row_low[r] && r < col_low[c];
-}
-
 // ---- 1D: bar plots ----
 
 struct Plot {
@@ -828,17 +821,26 @@ void image(Scene& scene, const Input& in, const std::vector<double>& v, double x
     const int n = in.n;
     double lo = 1e300, hi = -1e300;
     for (double x : in.data) lo = std::min(lo, x), hi = std::max(hi, x);
+    // A cell holds an average when both its row's and its column's averages reach it (every
+    // cell of a plain image).
+    auto average = [&](int r, int c) {
+        return !row_low || (c < (*row_low)[r] && r < (*col_low)[c]);
+    };
     double alo = lo, ahi = hi, dmax = 0;
     if (row_low) {
         alo = 1e300, ahi = -1e300;
-        for (std::size_t q = 0; q < v.size(); ++q) {
-            if (is_average(in, *row_low, *col_low, q))
-                alo = std::min(alo, v[q]), ahi = std::max(ahi, v[q]);
-            else
-                dmax = std::max(dmax, std::fabs(v[q]));
-        }
+        for (int r = 0; r < n; ++r)
+            for (int c = 0; c < n; ++c) {
+                const double x = v[std::size_t(r) * n + c];
+                if (average(r, c))
+                    alo = std::min(alo, x), ahi = std::max(ahi, x);
+                else
+                    dmax = std::max(dmax, std::fabs(x));
+            }
         if (!in.normalised) alo = std::min(alo, lo), ahi = std::max(ahi, hi);
     }
+    const double a_scale = ahi > alo ? 255 / (ahi - alo) : 0;
+    const double d_scale = dmax > 0 ? 1 / dmax : 0;
     PixelGrid2 g;
     g.origin = {x0, 0};
     g.width = g.height = n;
@@ -849,12 +851,12 @@ void image(Scene& scene, const Input& in, const std::vector<double>& v, double x
             const std::size_t at = std::size_t(r) * n + c;
             const std::size_t cell = std::size_t(n - 1 - r) * n + c;  // row 0 at the top
             std::uint32_t colour;
-            if (!row_low || is_average(in, *row_low, *col_low, at)) {
-                colour = grey(ahi > alo ? 255 * (v[at] - alo) / (ahi - alo) : 128);
+            if (average(r, c)) {
+                colour = grey(a_scale > 0 ? (v[at] - alo) * a_scale : 128);
             } else if (coefficients && (*coefficients)[at] != 0 && v[at] == 0) {
                 colour = 0xa08080ffu;  // zeroed: a reddish mid grey (0 is mid grey)
             } else {  // details: mid grey ± √(|d| / max), to make small ones visible
-                const double t = dmax > 0 ? std::sqrt(std::fabs(v[at]) / dmax) : 0;
+                const double t = std::sqrt(std::fabs(v[at]) * d_scale);
                 colour = grey(128 + (v[at] < 0 ? -127 : 127) * t);
             }
             g.rgba[cell] = colour;
