@@ -77,7 +77,8 @@ std::vector<HaarWavelet::Pass> HaarWavelet::plan(const Input& in) {
     } else if (in.mode == Mode::Standard) {
         const int g = std::max(1, n / kMaxGroups), L = log2_of(n);
         for (int dir = 0; dir < 2; ++dir)
-            for (int first = 0; first < n; first += g) f.push_back({false, dir == 0, first, g, n, L});
+            for (int first = 0; first < n; first += g)
+                f.push_back({false, dir == 0, first, g, n, L});
     } else {
         for (int m = n; m >= 2; m /= 2) {
             f.push_back({false, true, 0, m, m, 1});
@@ -180,14 +181,13 @@ double HaarWavelet::compress(const Input& in, std::vector<double>& c, long long&
 // ---- [patterns] -----------------------------------------------------------------------------
 
 const std::vector<std::string>& HaarWavelet::pattern_names() {
-    static const std::vector<std::string> names{"gradient", "disc", "checker",
+    static const std::vector<std::string> names{"gradient", "disc",   "checker",
                                                 "rings",    "blocks", "noise"};
     return names;
 }
 
 // Values 0 … 255 (a grey image). Row 0 is the top row.
-std::vector<double> HaarWavelet::pattern_image(const std::string& name, int n,
-                                               std::uint64_t seed) {
+std::vector<double> HaarWavelet::pattern_image(const std::string& name, int n, std::uint64_t seed) {
     std::vector<double> v(std::size_t(n) * n, 0.0);
     Rng rng(seed);
     for (int r = 0; r < n; ++r)
@@ -254,8 +254,7 @@ const Spec& HaarWavelet::spec() {
                      "flipped"},
                     {"reconstruct", "x_1", "swap:x_0",
                      "put s − d first and s + d second: each pair comes back reversed"},
-                    {"rows", "d_0", "negate",
-                     "differenced the row's pairs right minus left"},
+                    {"rows", "d_0", "negate", "differenced the row's pairs right minus left"},
                     {"threshold", "zeroed", "off-by-one",
                      "counted the overall average as a small detail and dropped it too"},
                 },
@@ -277,10 +276,10 @@ void HaarWavelet::validate(const Input& in) {
         throw InputError(what, img ? "must have at least 1 row (got none)"
                                    : "must have at least 1 value (got none)");
     if ((in.n & (in.n - 1)) != 0)
-        throw InputError(what, (img ? "is " + std::to_string(in.n) + " × " +
-                                          std::to_string(in.n) + "; the side"
-                                    : "has " + std::to_string(in.n) + " values; the length") +
-                                   " must be a power of two (1, 2, 4, 8, …): each level halves it");
+        throw InputError(
+            what, (img ? "is " + std::to_string(in.n) + " × " + std::to_string(in.n) + "; the side"
+                       : "has " + std::to_string(in.n) + " values; the length") +
+                      " must be a power of two (1, 2, 4, 8, …): each level halves it");
     const int limit = img ? kMaxImage : kMaxSignal;
     if (in.n > limit)
         throw InputError(what, img ? "is " + std::to_string(in.n) + " × " + std::to_string(in.n) +
@@ -289,8 +288,8 @@ void HaarWavelet::validate(const Input& in) {
                                    : "has " + std::to_string(in.n) + " values; at most " +
                                          std::to_string(limit) + " are stepped");
     if (in.data.size() != (img ? std::size_t(in.n) * in.n : std::size_t(in.n)))
-        throw InputError(what, "holds " + std::to_string(in.data.size()) + " values for n = " +
-                                   std::to_string(in.n));
+        throw InputError(what, "holds " + std::to_string(in.data.size()) +
+                                   " values for n = " + std::to_string(in.n));
     for (std::size_t i = 0; i < in.data.size(); ++i) {
         const double v = in.data[i];
         const std::string f =
@@ -305,8 +304,8 @@ void HaarWavelet::validate(const Input& in) {
     if (in.compress == Compress::Threshold && !(in.threshold >= 0 && std::isfinite(in.threshold)))
         throw InputError("threshold", "must be ≥ 0 (got " + num(in.threshold) + ")");
     if (in.compress == Compress::Keep && !(in.keep > 0 && in.keep <= 1))
-        throw InputError("keep", "must be a fraction in (0, 1] of the coefficients (got " +
-                                     num(in.keep) + ")");
+        throw InputError(
+            "keep", "must be a fraction in (0, 1] of the coefficients (got " + num(in.keep) + ")");
 }
 
 HaarWavelet::State HaarWavelet::start(const Input& in) {
@@ -445,18 +444,17 @@ void narrate_level(const State& s, StepInfo& info) {
                  num(prev[2 * k + 1]) + ") → s = " + num(s.c[k]) + ", d = " + num(s.c[half + k]);
     if (half > 8) pairs += "; …";
     info.narration = "Level " + std::to_string(j) + ": the " + std::to_string(m) +
-                     (j == 1 ? " samples" : " averages of the level before") + " in pairs, s = (a + b)/" +
-                     h_text(in) + ", d = (a − b)/" + h_text(in) + ": " + pairs + ". The averages " +
-                     list(s.c.data(), half) + " go first and the details " +
-                     list(s.c.data() + half, half) + " after them: c = " +
-                     list(s.c.data(), in.n) + "." +
+                     (j == 1 ? " samples" : " averages of the level before") +
+                     " in pairs, s = (a + b)/" + h_text(in) + ", d = (a − b)/" + h_text(in) + ": " +
+                     pairs + ". The averages " + list(s.c.data(), half) +
+                     " go first and the details " + list(s.c.data() + half, half) +
+                     " after them: c = " + list(s.c.data(), in.n) + "." +
                      (half == 1 ? " One average is left: the overall average." : "");
     info.math = "s_0 = \\frac{" + tex(prev[0]) + " + " + tex(prev[1]) + "}{" +
                 (in.normalised ? std::string("\\sqrt{2}") : std::string("2")) +
-                "} = " + tex(s.c[0]) + ",\\; d_0 = \\frac{" + tex(prev[0]) + " - " +
-                tex(prev[1]) + "}{" +
-                (in.normalised ? std::string("\\sqrt{2}") : std::string("2")) + "} = " +
-                tex(s.c[half]);
+                "} = " + tex(s.c[0]) + ",\\; d_0 = \\frac{" + tex(prev[0]) + " - " + tex(prev[1]) +
+                "}{" + (in.normalised ? std::string("\\sqrt{2}") : std::string("2")) +
+                "} = " + tex(s.c[half]);
     info.vars = {{"level", (long long)j},
                  {"m", (long long)m},
                  {"s_0", s.c[0]},
@@ -485,24 +483,22 @@ void narrate_pass(const State& s, StepInfo& info) {
     info.event = p.rows ? "rows" : "columns";
     info.line = standard ? kLineStandard : kLineNonStandard;
     const std::string lines = lines_text(p);
-    const std::string how =
-        standard ? "all " + std::to_string(p.levels) + " level" + (p.levels == 1 ? "" : "s") +
-                       " of the 1D transform"
-                 : "one level on the first " + std::to_string(p.len) + " entries (the " +
-                       std::to_string(p.len) + " × " + std::to_string(p.len) + " averages block)";
-    info.narration = std::string(p.rows ? "Rows" : "Columns") + ": " + lines + " — " + how +
-                     (p.count > 1 ? " (" + std::to_string(p.count) +
-                                        " lines in one step at this size)"
-                                  : "") +
-                     ". " + (p.rows ? "Row " : "Column ") + std::to_string(p.first) + ": " +
-                     list(before.data(), p.len, 6, 8) + " → " + list(after.data(), p.len, 6, 8) +
-                     "." +
-                     (standard && !p.rows && p.first + p.count == in.n
-                          ? " Every row and column is done: the standard decomposition."
-                          : "") +
-                     (!standard && !p.rows && p.len == 2
-                          ? " One average is left: the non-standard decomposition is done."
-                          : "");
+    const std::string how = standard ? "all " + std::to_string(p.levels) + " level" +
+                                           (p.levels == 1 ? "" : "s") + " of the 1D transform"
+                                     : "one level on the first " + std::to_string(p.len) +
+                                           " entries (the " + std::to_string(p.len) + " × " +
+                                           std::to_string(p.len) + " averages block)";
+    info.narration =
+        std::string(p.rows ? "Rows" : "Columns") + ": " + lines + " — " + how +
+        (p.count > 1 ? " (" + std::to_string(p.count) + " lines in one step at this size)" : "") +
+        ". " + (p.rows ? "Row " : "Column ") + std::to_string(p.first) + ": " +
+        list(before.data(), p.len, 6, 8) + " → " + list(after.data(), p.len, 6, 8) + "." +
+        (standard && !p.rows && p.first + p.count == in.n
+             ? " Every row and column is done: the standard decomposition."
+             : "") +
+        (!standard && !p.rows && p.len == 2
+             ? " One average is left: the non-standard decomposition is done."
+             : "");
     info.math = "s_0 = " + tex(after[0]) + ",\\; d_0 = " + tex(after[half]);
     info.vars = {{"lines", std::vector<double>{double(p.first), double(p.first + p.count - 1)}},
                  {"m", (long long)p.len},
@@ -527,15 +523,16 @@ void narrate_threshold(const State& s, StepInfo& info) {
     info.narration =
         rule + ": " + std::to_string(s.zeroed) + " non-zero coefficient" +
         (s.zeroed == 1 ? "" : "s") + " dropped, " + std::to_string(s.kept) + " of " +
-        std::to_string(total) + " left. The L2 error this will cost is √(Σ w c²) over the dropped "
+        std::to_string(total) +
+        " left. The L2 error this will cost is √(Σ w c²) over the dropped "
         "ones = " +
         num(s.predicted_error) +
         (in.normalised ? " (normalised: w = 1, Parseval)."
                        : ", w the number of samples each one's basis function spans "
                          "(unnormalised coefficients are not weighted equally, so a small one "
                          "at a coarse level can cost more than a larger fine one).");
-    info.math = "\\lVert x - x' \\rVert_2 = \\sqrt{\\textstyle\\sum w\\, c^2} = " +
-                tex(s.predicted_error);
+    info.math =
+        "\\lVert x - x' \\rVert_2 = \\sqrt{\\textstyle\\sum w\\, c^2} = " + tex(s.predicted_error);
     info.vars = {{in.compress == Compress::Threshold ? "threshold" : "keep",
                   in.compress == Compress::Threshold ? in.threshold : in.keep},
                  {"zeroed", s.zeroed},
@@ -563,13 +560,13 @@ void narrate_inverse(const State& s, StepInfo& info) {
         if (half > 8) pairs += "; …";
         info.narration = "Undo the level of length " + std::to_string(p.len) +
                          ": each pair is s + d, s − d" + g + ": " + pairs + ". The first " +
-                         std::to_string(p.len) + " entries are now " +
-                         list(after.data(), p.len) + ".";
+                         std::to_string(p.len) + " entries are now " + list(after.data(), p.len) +
+                         ".";
     } else {
         info.narration = "Undo " + lines_text(p) + " (" + std::to_string(p.levels) + " level" +
                          (p.levels == 1 ? "" : "s") + " on " + std::to_string(p.len) +
-                         " entries, pairs s + d, s − d" + g + "): " +
-                         (p.rows ? "row " : "column ") + std::to_string(p.first) + " " +
+                         " entries, pairs s + d, s − d" + g +
+                         "): " + (p.rows ? "row " : "column ") + std::to_string(p.first) + " " +
                          list(before.data(), p.len, 6, 8) + " → " +
                          list(after.data(), p.len, 6, 8) + ".";
     }
@@ -586,15 +583,15 @@ void narrate_summary(const State& s, StepInfo& info) {
     const double rel = s.signal_norm > 0 ? s.l2_error / s.signal_norm : 0;
     info.narration =
         "Reconstructed " + std::string(two_d(in) ? "image" : "signal") +
-        (in.n <= 16 && !two_d(in) ? " " + list(s.c.data(), in.n) : "") + ": ‖x − x′‖₂ = " +
-        num(s.l2_error) + " (relative " + num(rel, 4) + "), max |x − x′| = " + num(s.max_error) +
-        ". " + std::to_string(s.kept) + " of " + std::to_string(total) +
-        " coefficients are non-zero" +
+        (in.n <= 16 && !two_d(in) ? " " + list(s.c.data(), in.n) : "") +
+        ": ‖x − x′‖₂ = " + num(s.l2_error) + " (relative " + num(rel, 4) +
+        "), max |x − x′| = " + num(s.max_error) + ". " + std::to_string(s.kept) + " of " +
+        std::to_string(total) + " coefficients are non-zero" +
         (in.compress != Compress::None
              ? "; the thresholding predicted an error of " + num(s.predicted_error) + "."
              : "; nothing was dropped, so the reconstruction is exact up to rounding.") +
-        (in.normalised ? " Normalised: ‖c‖₂ = " + num(s.coefficient_norm) + " = ‖x‖₂ = " +
-                             num(s.signal_norm) + " (Parseval)."
+        (in.normalised ? " Normalised: ‖c‖₂ = " + num(s.coefficient_norm) +
+                             " = ‖x‖₂ = " + num(s.signal_norm) + " (Parseval)."
                        : "");
     info.math = "\\lVert x - x' \\rVert_2 = " + tex(s.l2_error);
     info.vars = {{"l2_error", s.l2_error},
@@ -882,20 +879,20 @@ void draw_2d(const State& s, Scene& scene) {
     if (!inverse) {
         image(scene, in, s.c, mid, &row_low, &col_low,
               s.last == Phase::Threshold ? &s.coefficients : nullptr);
-        scene.labels.push_back({{mid, below},
-                                in.mode == Mode::Standard ? "coefficients (standard)"
-                                                          : "coefficients (non-standard)",
-                                {Role::Kept}});
+        scene.labels.push_back(
+            {{mid, below},
+             in.mode == Mode::Standard ? "coefficients (standard)" : "coefficients (non-standard)",
+             {Role::Kept}});
     } else {
         // The coefficients the reconstruction starts from, and the reconstruction under way.
         const std::vector<int> full_r(std::size_t(n), 1), full_c(std::size_t(n), 1);
         image(scene, in, s.compressed, mid, &full_r, &full_c, &s.coefficients);
         scene.labels.push_back({{mid, below}, "kept coefficients", {Role::Kept}});
         image(scene, in, s.c, right, &row_low, &col_low, nullptr);
-        scene.labels.push_back({{right, below},
-                                s.last == Phase::Summary ? "reconstruction"
-                                                         : "reconstruction under way",
-                                {Role::Entering}});
+        scene.labels.push_back(
+            {{right, below},
+             s.last == Phase::Summary ? "reconstruction" : "reconstruction under way",
+             {Role::Entering}});
     }
     // The band boundaries of the transform: where averages end and details begin.
     const double ox = inverse ? right : mid;
@@ -922,8 +919,7 @@ void draw_2d(const State& s, Scene& scene) {
             const double h = p.len / 2.0;
             scene.labels.push_back({{ox + 0.2, n - h / 2}, "averages", {Role::Kept}});
             scene.labels.push_back({{ox + h + 0.2, n - h / 2}, "row details", {Role::Entering}});
-            scene.labels.push_back(
-                {{ox + 0.2, n - 1.5 * h}, "column details", {Role::Entering}});
+            scene.labels.push_back({{ox + 0.2, n - 1.5 * h}, "column details", {Role::Entering}});
             scene.labels.push_back({{ox + h + 0.2, n - 1.5 * h}, "diagonal", {Role::Entering}});
         }
     }

@@ -77,11 +77,11 @@ struct HaarWavelet {
         Mode mode = Mode::OneD;
         int n = 0;
         std::vector<std::vector<double>> levels;  // 1D: the vector after each level
-        std::vector<double> coefficients;        // the full transform
-        std::vector<double> compressed;          // after zeroing (= coefficients without it)
+        std::vector<double> coefficients;         // the full transform
+        std::vector<double> compressed;           // after zeroing (= coefficients without it)
         std::vector<double> reconstruction;
-        long long zeroed = 0;   // non-zero coefficients set to 0
-        long long kept = 0;     // non-zero coefficients left
+        long long zeroed = 0;        // non-zero coefficients set to 0
+        long long kept = 0;          // non-zero coefficients left
         double predicted_error = 0;  // √Σ w c² over the dropped coefficients
         double l2_error = 0;         // ‖x − x̃‖₂
         double max_error = 0;        // max |x − x̃|
@@ -97,13 +97,13 @@ struct HaarWavelet {
         Shared<std::vector<Pass>> passes;  // forward then inverse, fixed at the start
         Phase phase = Phase::Forward;
         Phase last = Phase::Forward;
-        int next = 0;   // the next pass
-        int done_passes = 0;
+        int next = 0;           // the next pass
         std::vector<double> c;  // the working array
         std::vector<std::vector<double>> levels;
         std::vector<double> coefficients, compressed;
         long long zeroed = 0, kept = 0;
-        double predicted_error = 0, cut = 0;  // cut: the threshold in force (keep: the smallest kept)
+        // cut: the threshold in force (keep: the smallest detail kept)
+        double predicted_error = 0, cut = 0;
         double l2_error = 0, max_error = 0, signal_norm = 0, coefficient_norm = 0;
         bool operator==(const State&) const = default;
     };

@@ -42,9 +42,10 @@ std::string HaarWavelet::question(const Input& in) {
         "average (a + b)/2 stored first and the detail a − (a + b)/2 = (a − b)/2 stored after "
         "the averages";
     if (in.mode == Mode::OneD) {
-        std::string q = "Compute the (unnormalised) Haar transform of " +
-                        digits(in.data, 0, in.n) + " as in the course: replace each pair of "
-                        "neighbours (a, b) by its " + rule +
+        std::string q = "Compute the (unnormalised) Haar transform of " + digits(in.data, 0, in.n) +
+                        " as in the course: replace each pair of "
+                        "neighbours (a, b) by its " +
+                        rule +
                         ", then repeat on the averages until one is left. Give the vector after "
                         "each level (levels) and the final coefficients (coefficients).";
         if (in.compress == Compress::Threshold)

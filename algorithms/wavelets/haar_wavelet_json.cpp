@@ -60,8 +60,9 @@ struct JsonIo<HaarWavelet> {
         HaarWavelet::Input in;
         const int given = int(r.has("signal")) + int(r.has("image")) + int(r.has("pattern"));
         if (given == 0)
-            throw InputError("signal", "is missing: give a \"signal\" (a list of numbers), an "
-                                       "\"image\" (a list of rows) or a \"pattern\"");
+            throw InputError("signal",
+                             "is missing: give a \"signal\" (a list of numbers), an "
+                             "\"image\" (a list of rows) or a \"pattern\"");
         if (given > 1)
             throw InputError(r.has("signal") ? "signal" : "image",
                              "give one of \"signal\", \"image\" and \"pattern\", not several");
@@ -74,15 +75,18 @@ struct JsonIo<HaarWavelet> {
             const json& rows = r.get("image");
             const std::string f = r.field("image");
             if (!rows.is_array())
-                throw InputError(f, "must be a list of rows (lists of numbers), got " +
-                                        describe(rows));
+                throw InputError(
+                    f, "must be a list of rows (lists of numbers), got " + describe(rows));
             in.n = int(std::min<std::size_t>(rows.size(), INT_MAX));
             for (std::size_t k = 0; k < rows.size(); ++k) {
-                std::vector<double> row = haar_json::numbers(rows[k], element(f, k), "numbers (a row)");
+                std::vector<double> row =
+                    haar_json::numbers(rows[k], element(f, k), "numbers (a row)");
                 if (row.size() != rows.size())
                     throw InputError(element(f, k),
-                                     "has " + std::to_string(row.size()) + " values, but the "
-                                     "image has " + std::to_string(rows.size()) +
+                                     "has " + std::to_string(row.size()) +
+                                         " values, but the "
+                                         "image has " +
+                                         std::to_string(rows.size()) +
                                          " rows: the 2D transform needs a square image");
                 in.data.insert(in.data.end(), row.begin(), row.end());
             }
@@ -119,17 +123,18 @@ struct JsonIo<HaarWavelet> {
             else if (m == "nonstandard")
                 in.mode = Mode::NonStandard;
             else
-                throw InputError(r.field("mode"),
-                                 "must be \"1d\", \"standard\" or \"nonstandard\", got \"" + m +
-                                     "\"");
+                throw InputError(
+                    r.field("mode"),
+                    "must be \"1d\", \"standard\" or \"nonstandard\", got \"" + m + "\"");
             if (two_d && in.mode == Mode::OneD)
                 throw InputError(r.field("mode"),
                                  "\"1d\" transforms a signal; an image is decomposed "
                                  "\"standard\" or \"nonstandard\"");
             if (!two_d && in.mode != Mode::OneD)
                 throw InputError(r.field("mode"),
-                                 "\"" + m + "\" is a 2D decomposition: give an \"image\" (a list "
-                                 "of rows), or use \"1d\" for a signal");
+                                 "\"" + m +
+                                     "\" is a 2D decomposition: give an \"image\" (a list "
+                                     "of rows), or use \"1d\" for a signal");
         }
         if (r.has("normalised")) in.normalised = r.boolean("normalised");
         if (r.has("threshold") && r.has("keep"))
@@ -157,7 +162,8 @@ struct JsonIo<HaarWavelet> {
             json rows = json::array();
             for (int r = 0; r < in.n; ++r) {
                 json row = json::array();
-                for (int c = 0; c < in.n; ++c) row.push_back(nice_number(in.data[std::size_t(r) * in.n + c]));
+                for (int c = 0; c < in.n; ++c)
+                    row.push_back(nice_number(in.data[std::size_t(r) * in.n + c]));
                 rows.push_back(row);
             }
             j["image"] = rows;

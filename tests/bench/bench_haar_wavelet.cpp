@@ -19,7 +19,7 @@ const std::vector<HaarWavelet::Input>& inputs() {
         std::vector<HaarWavelet::Input> out;
         for (int k = 0; k < 120; ++k) {
             HaarWavelet::Input in;
-            in.mode = k < 80   ? HaarWavelet::Mode::OneD
+            in.mode = k < 80    ? HaarWavelet::Mode::OneD
                       : k < 100 ? HaarWavelet::Mode::Standard
                                 : HaarWavelet::Mode::NonStandard;
             in.n = k < 80 ? 256 : 64;

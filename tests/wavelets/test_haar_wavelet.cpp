@@ -58,8 +58,7 @@ std::vector<std::vector<LD>> analysis(int n, bool normalised) {
         while ((2 << level) <= i) ++level;
         const int S = n >> level, p = i - (1 << level);
         const LD scale = normalised ? std::sqrt(LD(S)) : 1;
-        for (int j = 0; j < S; ++j)
-            W[i][p * S + j] = (j < S / 2 ? 1 : -1) * scale / LD(S);
+        for (int j = 0; j < S; ++j) W[i][p * S + j] = (j < S / 2 ? 1 : -1) * scale / LD(S);
     }
     return W;
 }
@@ -133,13 +132,27 @@ std::vector<double> values(cg::Rng& rng, std::size_t count, int kind) {
     std::vector<double> v(count);
     const double c = rng.uniform(-10, 10);
     for (auto& x : v) switch (kind) {
-            case 0: x = double(rng.integer(0, 9)); break;
-            case 1: x = rng.uniform(-1, 1); break;
-            case 2: x = c; break;
-            case 3: x = rng.chance(0.5) ? 1e300 : -1e300; break;
-            case 4: x = rng.uniform(-1, 1) * 1e300; break;
-            case 5: x = rng.uniform(-1, 1) * 1e-300; break;
-            default: x = rng.uniform(-1, 1) * std::pow(10.0, double(rng.integer(-30, 30))); break;
+            case 0:
+                x = double(rng.integer(0, 9));
+                break;
+            case 1:
+                x = rng.uniform(-1, 1);
+                break;
+            case 2:
+                x = c;
+                break;
+            case 3:
+                x = rng.chance(0.5) ? 1e300 : -1e300;
+                break;
+            case 4:
+                x = rng.uniform(-1, 1) * 1e300;
+                break;
+            case 5:
+                x = rng.uniform(-1, 1) * 1e-300;
+                break;
+            default:
+                x = rng.uniform(-1, 1) * std::pow(10.0, double(rng.integer(-30, 30)));
+                break;
         }
     return v;
 }
@@ -157,7 +170,8 @@ void check_against_reference(const Input& in) {
     const HaarWavelet::Result r = HaarWavelet::compute(in);
     const std::vector<LD> ref = reference(in);
     const double scale = max_abs(in.data);
-    const double grow = in.normalised ? (in.mode == Mode::OneD ? std::sqrt(double(in.n)) : in.n) : 1;
+    const double grow =
+        in.normalised ? (in.mode == Mode::OneD ? std::sqrt(double(in.n)) : in.n) : 1;
     REQUIRE(r.coefficients.size() == ref.size());
     REQUIRE(all_finite(r.coefficients));
     REQUIRE(all_finite(r.reconstruction));
@@ -237,8 +251,7 @@ TEST_CASE("haar-wavelet: the course's examples by hand, digit for digit",
     }
 }
 
-TEST_CASE("haar-wavelet: the narration of [8 4 1 3], level by level",
-          "[wavelets][haar-wavelet]") {
+TEST_CASE("haar-wavelet: the narration of [8 4 1 3], level by level", "[wavelets][haar-wavelet]") {
     const auto t = cg::test::run_traced<HaarWavelet>(signal({8, 4, 1, 3}));
     CHECK(cg::test::events(t) ==
           std::vector<std::string>{"level", "level", "reconstruct", "reconstruct", "summary"});
@@ -284,7 +297,8 @@ TEST_CASE("haar-wavelet: 600 random images, standard and non-standard, against t
         check_against_reference(ns);
         if (n >= 4 && (kind == 0 || kind == 1)) {
             ++both;
-            differ += HaarWavelet::compute(st).coefficients != HaarWavelet::compute(ns).coefficients;
+            differ +=
+                HaarWavelet::compute(st).coefficients != HaarWavelet::compute(ns).coefficients;
         }
     }
     // Standard and non-standard differ in general (from 4 × 4 on; at 2 × 2 they are one).
@@ -299,7 +313,9 @@ TEST_CASE("haar-wavelet: compression, the predicted error is the measured one",
         const int choice = int(rng.integer(0, 2));
         const int n = 1 << int(rng.integer(0, choice == 0 ? 8 : 4));
         Input in;
-        const auto mode = choice == 0 ? Mode::OneD : choice == 1 ? Mode::Standard : Mode::NonStandard;
+        const auto mode = choice == 0   ? Mode::OneD
+                          : choice == 1 ? Mode::Standard
+                                        : Mode::NonStandard;
         const int kind = int(rng.integer(0, 6));
         in = mode == Mode::OneD ? signal(values(rng, std::size_t(n), kind))
                                 : image(n, values(rng, std::size_t(n) * n, kind), mode);
@@ -333,21 +349,27 @@ TEST_CASE("haar-wavelet: compression, the predicted error is the measured one",
             // Everything kept is at least as large as everything dropped (details).
             double smallest_kept = 1e308, largest_dropped = 0;
             for (std::size_t i = 1; i < N; ++i) {
-                if (r.compressed[i] != 0) smallest_kept = std::min(smallest_kept, std::fabs(r.compressed[i]));
-                else largest_dropped = std::max(largest_dropped, std::fabs(r.coefficients[i]));
+                if (r.compressed[i] != 0)
+                    smallest_kept = std::min(smallest_kept, std::fabs(r.compressed[i]));
+                else
+                    largest_dropped = std::max(largest_dropped, std::fabs(r.coefficients[i]));
             }
             CHECK(largest_dropped <= smallest_kept);
         } else {
             for (std::size_t i = 1; i < N; ++i) {
-                if (std::fabs(r.coefficients[i]) < in.threshold) CHECK(r.compressed[i] == 0);
-                else CHECK(r.compressed[i] == r.coefficients[i]);
+                if (std::fabs(r.coefficients[i]) < in.threshold)
+                    CHECK(r.compressed[i] == 0);
+                else
+                    CHECK(r.compressed[i] == r.coefficients[i]);
             }
         }
         // Normalised, the error is the norm of the dropped coefficients themselves.
         if (in.normalised) {
             std::vector<double> dropped;
-            for (std::size_t i = 0; i < N; ++i) dropped.push_back(r.coefficients[i] - r.compressed[i]);
-            CHECK(std::fabs(HaarWavelet::norm(dropped) - r.l2_error) <= 1e-10 * r.signal_norm + 1e-300);
+            for (std::size_t i = 0; i < N; ++i)
+                dropped.push_back(r.coefficients[i] - r.compressed[i]);
+            CHECK(std::fabs(HaarWavelet::norm(dropped) - r.l2_error) <=
+                  1e-10 * r.signal_norm + 1e-300);
         }
     }
 }
@@ -358,7 +380,9 @@ TEST_CASE("haar-wavelet: the state machine gives what compute gives, through the
     for (int k = 0; k < 200; ++k) {
         const int choice = int(rng.integer(0, 2));
         const int n = 1 << int(rng.integer(0, 5));
-        const auto mode = choice == 0 ? Mode::OneD : choice == 1 ? Mode::Standard : Mode::NonStandard;
+        const auto mode = choice == 0   ? Mode::OneD
+                          : choice == 1 ? Mode::Standard
+                                        : Mode::NonStandard;
         Input in = mode == Mode::OneD ? signal(values(rng, std::size_t(n), 1))
                                       : image(n, values(rng, std::size_t(n) * n, 1), mode);
         in.normalised = rng.chance(0.5);
@@ -413,8 +437,7 @@ TEST_CASE("haar-wavelet: the steps, one level (or one row, one column) at a time
     }
 }
 
-TEST_CASE("haar-wavelet: huge and tiny values stay finite and exact",
-          "[wavelets][haar-wavelet]") {
+TEST_CASE("haar-wavelet: huge and tiny values stay finite and exact", "[wavelets][haar-wavelet]") {
     for (bool normalised : {false, true}) {
         const auto r = HaarWavelet::compute(signal(std::vector<double>(1024, 1e300), normalised));
         CHECK(all_finite(r.coefficients));
@@ -441,24 +464,38 @@ TEST_CASE("haar-wavelet: bad input names the field and the reason", "[wavelets][
           "signal: has 3 values; the length must be a power of two (1, 2, 4, 8, …): each level "
           "halves it");
     CHECK(err(R"({"signal": []})") == "signal: must have at least 1 value (got none)");
-    CHECK(err(R"({"image": [[1, 2], [3]]})").rfind("image[1]: has 1 values, but the image has 2 rows", 0) == 0);
-    CHECK(err(R"({"image": [[1, 2, 3], [4, 5, 6], [7, 8, 9]]})").rfind("image: is 3 × 3; the side must be a power of two", 0) == 0);
-    CHECK(err(R"({"signal": [1, 2], "mode": "standard"})").rfind("mode: \"standard\" is a 2D decomposition", 0) == 0);
-    CHECK(err(R"({"image": [[1, 2], [3, 4]], "mode": "1d"})").rfind("mode: \"1d\" transforms a signal", 0) == 0);
-    CHECK(err(R"({"signal": [1, 2], "mode": "wavelet"})").rfind("mode: must be \"1d\", \"standard\" or \"nonstandard\"", 0) == 0);
-    CHECK(err(R"({"signal": [1, 2], "threshold": 1, "keep": 0.5})") == "keep: give either threshold or keep, not both");
+    CHECK(err(R"({"image": [[1, 2], [3]]})")
+              .rfind("image[1]: has 1 values, but the image has 2 rows", 0) == 0);
+    CHECK(err(R"({"image": [[1, 2, 3], [4, 5, 6], [7, 8, 9]]})")
+              .rfind("image: is 3 × 3; the side must be a power of two", 0) == 0);
+    CHECK(err(R"({"signal": [1, 2], "mode": "standard"})")
+              .rfind("mode: \"standard\" is a 2D decomposition", 0) == 0);
+    CHECK(err(R"({"image": [[1, 2], [3, 4]], "mode": "1d"})")
+              .rfind("mode: \"1d\" transforms a signal", 0) == 0);
+    CHECK(err(R"({"signal": [1, 2], "mode": "wavelet"})")
+              .rfind("mode: must be \"1d\", \"standard\" or \"nonstandard\"", 0) == 0);
+    CHECK(err(R"({"signal": [1, 2], "threshold": 1, "keep": 0.5})") ==
+          "keep: give either threshold or keep, not both");
     CHECK(err(R"({"signal": [1, 2], "threshold": -1})") == "threshold: must be ≥ 0 (got -1)");
-    CHECK(err(R"({"signal": [1, 2], "keep": 0})").rfind("keep: must be a fraction in (0, 1]", 0) == 0);
-    CHECK(err(R"({"signal": [1, 2], "keep": 1.5})").rfind("keep: must be a fraction in (0, 1]", 0) == 0);
+    CHECK(err(R"({"signal": [1, 2], "keep": 0})").rfind("keep: must be a fraction in (0, 1]", 0) ==
+          0);
+    CHECK(
+        err(R"({"signal": [1, 2], "keep": 1.5})").rfind("keep: must be a fraction in (0, 1]", 0) ==
+        0);
     CHECK(err(R"({"signal": [1, 1e301]})").rfind("signal[1]: is too large", 0) == 0);
     CHECK(err(R"({"image": [[1, 2], [-1e301, 4]]})").rfind("image[1][0]: is too large", 0) == 0);
     CHECK(err(R"({"signal": [1, "2"]})").rfind("signal[1]: must be a number", 0) == 0);
-    CHECK(err(R"({"pattern": {"name": "mandrill", "size": 8}})").rfind("pattern.name: must be one of gradient", 0) == 0);
-    CHECK(err(R"({"pattern": {"name": "disc", "size": 6}})") == "pattern.size: must be a power of two (1, 2, 4, 8, …), got 6");
-    CHECK(err(R"({"pattern": {"name": "disc", "size": 512}})").rfind("pattern.size: must be 1 to 256 pixels", 0) == 0);
-    CHECK(err(R"({"signal": [1, 2], "image": [[1]]})") == "signal: give one of \"signal\", \"image\" and \"pattern\", not several");
+    CHECK(err(R"({"pattern": {"name": "mandrill", "size": 8}})")
+              .rfind("pattern.name: must be one of gradient", 0) == 0);
+    CHECK(err(R"({"pattern": {"name": "disc", "size": 6}})") ==
+          "pattern.size: must be a power of two (1, 2, 4, 8, …), got 6");
+    CHECK(err(R"({"pattern": {"name": "disc", "size": 512}})")
+              .rfind("pattern.size: must be 1 to 256 pixels", 0) == 0);
+    CHECK(err(R"({"signal": [1, 2], "image": [[1]]})") ==
+          "signal: give one of \"signal\", \"image\" and \"pattern\", not several");
     CHECK(err(R"({})").rfind("signal: is missing", 0) == 0);
-    CHECK(err(R"({"signal": [1, 2], "normalized": true})").rfind("normalized: is not a known field", 0) == 0);
+    CHECK(err(R"({"signal": [1, 2], "normalized": true})")
+              .rfind("normalized: is not a known field", 0) == 0);
     std::string big = "{\"signal\": [0";
     for (int i = 1; i < 2048; ++i) big += ", 0";
     CHECK(err(big + "]}") == "signal: has 2048 values; at most 1024 are stepped");
@@ -497,7 +534,8 @@ TEST_CASE("haar-wavelet: exam problems are by-hand sized and answered by the ref
             // The last level is the transform; each level's averages are quarter-integers.
             CHECK(p.expected["levels"].back() == coefficients);
             std::string digits = "[";
-            for (int i = 0; i < in.n; ++i) digits += (i ? " " : "") + std::to_string(int(in.data[i]));
+            for (int i = 0; i < in.n; ++i)
+                digits += (i ? " " : "") + std::to_string(int(in.data[i]));
             CHECK(p.question.find(digits + "]") != std::string::npos);
             constant += std::all_of(in.data.begin(), in.data.end(),
                                     [&](double v) { return v == in.data[0]; });
