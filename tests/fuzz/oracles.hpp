@@ -7,11 +7,14 @@
 //   resumable    a copy of the state taken part-way finishes with the same steps, byte for
 //                byte, the same result and the same final state: what the viewer's Back and
 //                the timeline's checkpoints rely on (back, then forward, replays the copy)
+//   plain        run to the end, the result holds every number of the algorithm's
+//                straight-line function's (where it has one) to the tests' tolerance
 //   silent       stepping without narration (run to end, the tests' reference runs) reaches
 //                the same final state as stepping with it
 // A broken oracle throws OracleViolation naming the algorithm, the step and what differs.
 #pragma once
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -90,6 +93,33 @@ inline std::string non_finite(const json& j, const std::string& path = "") {
         for (const auto& [k, v] : j.items())
             if (auto p = non_finite(v, path + "/" + k); !p.empty()) return p;
     return "";
+}
+
+// The path of the first difference between a and b, numbers compared to the tests'
+// tolerance (relative 1e-9, absolute near 0), or "". An object of b may have fields a lacks:
+// a run's result adds what the lesson shows (solid-texture's worked noise point), a plain
+// function computes only the numbers.
+inline std::string first_difference(const json& a, const json& b, const std::string& path = "") {
+    const std::string here = path.empty() ? "/" : path;
+    if (a.is_number() && b.is_number()) {
+        const double x = a.get<double>(), y = b.get<double>();
+        const double scale = std::max({1.0, std::fabs(x), std::fabs(y)});
+        return std::fabs(x - y) <= 1e-9 * scale ? "" : here + " (" + a.dump() + " against " + b.dump() + ")";
+    }
+    if (a.type() != b.type() || (!a.is_object() && a.size() != b.size())) return here;
+    if (a.is_array()) {
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (auto d = first_difference(a[i], b[i], path + "/" + std::to_string(i)); !d.empty()) return d;
+        return "";
+    }
+    if (a.is_object()) {
+        for (const auto& [k, v] : a.items()) {
+            if (!b.contains(k)) return path + "/" + k + " (missing)";
+            if (auto d = first_difference(v, b[k], path + "/" + k); !d.empty()) return d;
+        }
+        return "";
+    }
+    return a == b ? "" : here + " (" + a.dump() + " against " + b.dump() + ")";
 }
 
 // FNV-1a: the steps are compared byte for byte through their hashes, so a long run keeps
@@ -171,6 +201,12 @@ inline Outcome check_algorithm_input(const Algorithm& a, const json& input) {
         if (const std::string at = d::non_finite(r); !at.empty())
             throw OracleViolation(who + ": the result has a non-finite number at " + at);
         result = r.dump();
+        // Plain: the straight-line function gives the same result.
+        if (a.plain) {
+            const json p = a.plain(input);
+            if (const std::string at = d::first_difference(p, r); !at.empty())
+                throw OracleViolation(who + ": run to the end and the plain function differ at " + at);
+        }
     }
 
     // Resumable: the copy replays the same steps and ends in the same state.

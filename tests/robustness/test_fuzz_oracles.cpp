@@ -232,3 +232,22 @@ TEST_CASE("fuzz oracles: each oracle catches a run broken its way", "[fuzz][orac
     CHECK_THROWS_WITH(cg::fuzz::check_algorithm_input(counter(Flaw::NanInNarration), input),
                       Catch::Contains("step 7's narration shows a non-number"));
 }
+
+TEST_CASE("fuzz oracles: every algorithm registers its plain function or says why it has none", "[fuzz][oracles]") {
+    for (const cg::Algorithm& a : cg::fuzz::registry().all()) {
+        INFO(a.spec->id);
+        CHECK((a.plain ? 1 : 0) + (a.no_plain.empty() ? 0 : 1) == 1);
+        if (!a.plain) CHECK(a.no_plain.size() > 20);  // a reason, not a placeholder
+    }
+}
+
+TEST_CASE("fuzz oracles: a plain function that disagrees with the run is caught", "[fuzz][oracles]") {
+    cg::Algorithm a = counter(Flaw::None);
+    a.plain = [](const json&) { return json{{"k", 40.0}}; };
+    CHECK(cg::fuzz::check_algorithm_input(a, json::object()).steps == 40);
+    a.plain = [](const json&) { return json{{"k", 40.0 + 1e-6}}; };
+    CHECK_THROWS_WITH(cg::fuzz::check_algorithm_input(a, json::object()),
+                      Catch::Contains("plain function differ at /k"));
+    a.plain = [](const json&) { return json{{"k", 40.0 * (1 + 1e-12)}}; };  // within tolerance
+    CHECK_NOTHROW(cg::fuzz::check_algorithm_input(a, json::object()));
+}
