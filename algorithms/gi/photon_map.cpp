@@ -289,6 +289,7 @@ double PhotonMap::direct_irradiance(const Input& in, const World& w, dvec3 x) {
 void PhotonMap::advance(State& s) {
     const Input& in = *s.in;
     const World& w = *s.world;
+    if (s.phase == Phase::Done) return;  // a finished machine stays as it is
     s.last = s.phase;
     switch (s.phase) {
         case Phase::Emit: {
