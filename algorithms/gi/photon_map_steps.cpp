@@ -317,7 +317,12 @@ void PhotonMap::draw(const State& s, cg::Scene& scene) {
     if (s.last == Phase::Build) {  // the node's splitting plane across its box
         const Node& n = s.node;
         const int a = n.axis, b = (a + 1) % 3, c = (a + 2) % 3;
+        // A flat box (photons all on the floor) gets some height, so the plane shows as one.
         dvec3 lo = n.box_lo, hi = n.box_hi;
+        for (int i : {b, c}) {
+            const double pad = std::max(0.0, 0.05 * L - (hi[i] - lo[i])) / 2;
+            lo[i] -= pad, hi[i] += pad;
+        }
         auto corner = [&](double u, double v) {
             dvec3 p;
             p[a] = n.split, p[b] = u, p[c] = v;
