@@ -167,7 +167,8 @@ struct JsonIo<PhotonMap> {
 };
 
 Algorithm photon_map_algorithm() {
-    return make_algorithm<PhotonMap>();
+    return make_algorithm<PhotonMap>(
+        [](const PhotonMap::Input& in) { return PhotonMap::compute(in); });
 }
 
 }  // namespace cg
