@@ -8,7 +8,7 @@
 .PHONY: all deps configure build build-sanitize run test test-normal test-sanitize bench fuzz \
 	screenshots clean
 
-FUZZ_SECONDS ?= 300
+FUZZ_SECONDS ?= 600
 
 all: build
 
@@ -44,7 +44,7 @@ bench: deps
 	@build-bench/bin/cgbench_mesh
 	@env -u DISPLAY build-bench/bin/cgbench_frames
 
-# Each fuzz target for FUZZ_SECONDS (default 300), growing build-sanitize/fuzz/corpus/.
+# Each fuzz target for FUZZ_SECONDS (default 600), growing build-sanitize/fuzz/corpus/.
 fuzz: build-sanitize
 	@scripts/fuzz.sh $(FUZZ_SECONDS)
 

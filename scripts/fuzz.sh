@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Runs each fuzz target of the sanitizer build for SECONDS (default 300), from the seeds and
+# Runs each fuzz target of the sanitizer build for SECONDS (default 600), from the seeds and
 # the corpus grown so far (build-sanitize/fuzz/corpus/<target>, kept between runs), and prints
 # per target: seconds, executions, corpus size, and whether it found anything. A crash leaves
 # its input in build-sanitize/fuzz/artifacts/; fix it and copy the input into
 # tests/fuzz/regressions/<target>/.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-300}
+seconds=${1:-600}
 build=build-sanitize
 fuzz=$build/fuzz
 export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1
@@ -15,7 +15,7 @@ export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
 "$build/bin/fuzz_seeds" "$fuzz/seeds" lessons || exit 1
 mkdir -p "$fuzz/artifacts" "$fuzz/logs"
 status=0
-for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj; do
+for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study; do
   seeds=$fuzz/seeds/$t
   [[ $t == fuzz_lesson ]] && seeds=lessons
   [[ $t == fuzz_scene ]] && seeds=tests/golden/ray-tracer
@@ -29,7 +29,7 @@ for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_sce
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$')
   found=$([[ $rc == 0 ]] && echo "nothing" || echo "FAILED (exit $rc, see $log)")
   echo "$t: ${seconds} s, ${execs:-?} executions, corpus $(ls "$fuzz/corpus/$t" | wc -l) files, found: $found"
-  grep '^algorithm ' "$log" | sed 's/^/    /'
+  grep '^algorithm' "$log" | sed 's/^/    /'
   [[ $rc == 0 ]] || status=1
 done
 exit $status

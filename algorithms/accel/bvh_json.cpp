@@ -147,7 +147,7 @@ struct JsonIo<Bvh> {
 };
 
 Algorithm bvh_algorithm() {
-    return make_algorithm<Bvh>();
+    return make_algorithm<Bvh>([](const Bvh::Input& in) { return Bvh::build_and_trace(in); });
 }
 
 }  // namespace cg

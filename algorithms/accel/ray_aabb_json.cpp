@@ -86,7 +86,7 @@ struct JsonIo<RayAabb> {
 };
 
 Algorithm ray_aabb_algorithm() {
-    return make_algorithm<RayAabb>();
+    return make_algorithm<RayAabb>([](const RayAabb::Input& in) { return RayAabb::intersect(in); });
 }
 
 }  // namespace cg

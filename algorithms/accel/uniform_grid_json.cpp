@@ -130,7 +130,8 @@ struct JsonIo<UniformGrid> {
 };
 
 Algorithm uniform_grid_algorithm() {
-    return make_algorithm<UniformGrid>();
+    return make_algorithm<UniformGrid>(
+        [](const UniformGrid::Input& in) { return UniformGrid::trace(in); });
 }
 
 }  // namespace cg

@@ -84,7 +84,8 @@ struct JsonIo<AffineCombination> {
 };
 
 Algorithm affine_combination_algorithm() {
-    return make_algorithm<AffineCombination>();
+    return make_algorithm<AffineCombination>(
+        [](const AffineCombination::Input& in) { return AffineCombination::classify(in); });
 }
 
 }  // namespace cg

@@ -124,7 +124,8 @@ struct JsonIo<VertexNormals> {
 };
 
 Algorithm vertex_normals_algorithm() {
-    return make_algorithm<VertexNormals>();
+    return make_algorithm<VertexNormals>(
+        [](const VertexNormals::Input& in) { return VertexNormals::compute(in); });
 }
 
 }  // namespace cg

@@ -45,6 +45,9 @@ struct JsonIo<LiangBarsky> {
     }
 };
 
-Algorithm liang_barsky_algorithm() { return make_algorithm<LiangBarsky>(); }
+Algorithm liang_barsky_algorithm() {
+    return make_algorithm<LiangBarsky>(
+        [](const LiangBarsky::Input& in) { return LiangBarsky::clip(in); });
+}
 
 }  // namespace cg

@@ -52,6 +52,10 @@ struct JsonIo<SutherlandHodgman> {
     }
 };
 
-Algorithm sutherland_hodgman_algorithm() { return make_algorithm<SutherlandHodgman>(); }
+Algorithm sutherland_hodgman_algorithm() {
+    return make_algorithm<SutherlandHodgman>([](const SutherlandHodgman::Input& in) {
+        return SutherlandHodgman::clip(in.window, in.polygon);
+    });
+}
 
 }  // namespace cg

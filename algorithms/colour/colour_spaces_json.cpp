@@ -84,7 +84,8 @@ struct JsonIo<ColourSpaces> {
 };
 
 Algorithm colour_spaces_algorithm() {
-    return make_algorithm<ColourSpaces>();
+    return make_algorithm<ColourSpaces>(
+        [](const ColourSpaces::Input& in) { return ColourSpaces::convert(in); });
 }
 
 }  // namespace cg

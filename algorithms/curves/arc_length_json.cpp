@@ -65,7 +65,9 @@ struct JsonIo<ArcLength> {
 };
 
 Algorithm arc_length_algorithm() {
-    return make_algorithm<ArcLength>();
+    return make_algorithm<ArcLength>(NoPlain{
+        "the stepped table is the only implementation; the tests hold it to the closed-form "
+        "length of quadratics and to exactly parameterised lines"});
 }
 
 }  // namespace cg

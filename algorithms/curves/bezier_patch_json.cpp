@@ -86,7 +86,8 @@ struct JsonIo<BezierPatch> {
 };
 
 Algorithm bezier_patch_algorithm() {
-    return make_algorithm<BezierPatch>();
+    return make_algorithm<BezierPatch>(
+        [](const BezierPatch::Input& in) { return BezierPatch::evaluate(in); });
 }
 
 }  // namespace cg

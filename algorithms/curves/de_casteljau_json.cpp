@@ -44,7 +44,8 @@ struct JsonIo<DeCasteljau> {
 };
 
 Algorithm de_casteljau_algorithm() {
-    return make_algorithm<DeCasteljau>();
+    return make_algorithm<DeCasteljau>(
+        [](const DeCasteljau::Input& in) { return DeCasteljau::evaluate(in); });
 }
 
 }  // namespace cg

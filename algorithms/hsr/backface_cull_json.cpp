@@ -90,7 +90,8 @@ struct JsonIo<BackfaceCull> {
 };
 
 Algorithm backface_cull_algorithm() {
-    return make_algorithm<BackfaceCull>();
+    return make_algorithm<BackfaceCull>(
+        [](const BackfaceCull::Input& in) { return BackfaceCull::cull(in); });
 }
 
 }  // namespace cg

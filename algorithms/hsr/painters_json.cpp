@@ -52,6 +52,9 @@ struct JsonIo<Painters> {
     }
 };
 
-Algorithm painters_algorithm() { return make_algorithm<Painters>(); }
+Algorithm painters_algorithm() {
+    return make_algorithm<Painters>(
+        [](const Painters::Input& in) { return Painters::render(in); });
+}
 
 }  // namespace cg

@@ -39,6 +39,9 @@ struct JsonIo<Warnock> {
     }
 };
 
-Algorithm warnock_algorithm() { return make_algorithm<Warnock>(); }
+Algorithm warnock_algorithm() {
+    return make_algorithm<Warnock>(
+        [](const Warnock::Input& in) { return Warnock::render(in); });
+}
 
 }  // namespace cg

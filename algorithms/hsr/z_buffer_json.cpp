@@ -62,6 +62,9 @@ struct JsonIo<ZBuffer> {
     }
 };
 
-Algorithm z_buffer_algorithm() { return make_algorithm<ZBuffer>(); }
+Algorithm z_buffer_algorithm() {
+    return make_algorithm<ZBuffer>(
+        [](const ZBuffer::Input& in) { return ZBuffer::render(in); });
+}
 
 }  // namespace cg

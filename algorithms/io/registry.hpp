@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "core/rng.hpp"
@@ -30,6 +31,17 @@ struct Algorithm {
     std::function<std::string(const json&)> question;    // the question for an input
     // The result fields that answer it; "a/b" names field b of the object in field a.
     std::function<std::vector<std::string>(const json&)> answer_fields;
+
+    // The algorithm's straight-line function (no stepping, no narration) on an input create()
+    // accepted, written as result JSON: the fuzz oracle holds run-to-end's result to it. Empty
+    // when the algorithm has none, and then `no_plain` says why (a conformance test asks).
+    std::function<json(const json&)> plain;
+    std::string no_plain;
+};
+
+// What an algorithm without a plain function gives make_algorithm instead: the reason.
+struct NoPlain {
+    const char* why;
 };
 
 class Registry {
@@ -98,6 +110,20 @@ Algorithm make_algorithm() {
             a.answer_fields = [](const json& j) { return A::answer_fields(JsonIo<A>::input(j)); };
         else
             a.answer_fields = [](const json&) { return A::answer_fields(); };
+    }
+    return a;
+}
+
+// The same, with the plain function (any callable Result(const Input&)) or NoPlain{why}.
+template <class A, class Plain>
+Algorithm make_algorithm(Plain plain) {
+    Algorithm a = make_algorithm<A>();
+    if constexpr (std::is_same_v<Plain, NoPlain>) {
+        a.no_plain = plain.why;
+    } else {
+        static_assert(std::is_invocable_r_v<typename A::Result, Plain, const typename A::Input&>,
+                      "the plain function takes the algorithm's Input and returns its Result");
+        a.plain = [plain](const json& j) { return JsonIo<A>::result(plain(JsonIo<A>::input(j))); };
     }
     return a;
 }

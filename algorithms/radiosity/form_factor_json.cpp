@@ -143,7 +143,8 @@ struct JsonIo<FormFactor> {
 };
 
 Algorithm form_factor_algorithm() {
-    return make_algorithm<FormFactor>();
+    return make_algorithm<FormFactor>(
+        [](const FormFactor::Input& in) { return FormFactor::compute(in); });
 }
 
 }  // namespace cg

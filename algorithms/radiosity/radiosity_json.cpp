@@ -233,7 +233,8 @@ struct JsonIo<Radiosity> {
 };
 
 Algorithm radiosity_algorithm() {
-    return make_algorithm<Radiosity>();
+    return make_algorithm<Radiosity>(
+        [](const Radiosity::Input& in) { return Radiosity::compute(in); });
 }
 
 }  // namespace cg

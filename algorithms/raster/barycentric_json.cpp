@@ -100,7 +100,8 @@ struct JsonIo<Barycentric> {
 };
 
 Algorithm barycentric_algorithm() {
-    return make_algorithm<Barycentric>();
+    return make_algorithm<Barycentric>(
+        [](const Barycentric::Input& in) { return Barycentric::compute(in); });
 }
 
 }  // namespace cg

@@ -65,6 +65,9 @@ struct JsonIo<ScanTriangle> {
     }
 };
 
-Algorithm scan_triangle_algorithm() { return make_algorithm<ScanTriangle>(); }
+Algorithm scan_triangle_algorithm() {
+    return make_algorithm<ScanTriangle>(
+        [](const ScanTriangle::Input& in) { return ScanTriangle::scan(in); });
+}
 
 }  // namespace cg

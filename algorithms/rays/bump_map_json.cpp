@@ -61,7 +61,7 @@ struct JsonIo<BumpMap> {
 };
 
 Algorithm bump_map_algorithm() {
-    return make_algorithm<BumpMap>();
+    return make_algorithm<BumpMap>([](const BumpMap::Input& in) { return BumpMap::solve(in); });
 }
 
 }  // namespace cg

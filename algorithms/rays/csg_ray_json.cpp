@@ -88,7 +88,8 @@ struct JsonIo<CsgRay> {
 };
 
 Algorithm csg_ray_algorithm() {
-    return make_algorithm<CsgRay>();
+    return make_algorithm<CsgRay>(
+        [](const CsgRay::Input& in) { return CsgRay::solve(Shared<CsgRay::Input>(in)); });
 }
 
 }  // namespace cg

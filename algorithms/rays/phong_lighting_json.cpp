@@ -146,7 +146,8 @@ struct JsonIo<PhongLighting> {
 };
 
 Algorithm phong_lighting_algorithm() {
-    return make_algorithm<PhongLighting>();
+    return make_algorithm<PhongLighting>(
+        [](const PhongLighting::Input& in) { return PhongLighting::shade(in); });
 }
 
 }  // namespace cg

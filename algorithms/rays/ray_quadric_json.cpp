@@ -61,7 +61,8 @@ struct JsonIo<RayQuadric> {
 };
 
 Algorithm ray_quadric_algorithm() {
-    return make_algorithm<RayQuadric>();
+    return make_algorithm<RayQuadric>(
+        [](const RayQuadric::Input& in) { return RayQuadric::solve(in); });
 }
 
 }  // namespace cg

@@ -263,7 +263,9 @@ json JsonIo<RayTracer>::example() {
 }
 
 Algorithm ray_tracer_algorithm() {
-    return make_algorithm<RayTracer>();
+    return make_algorithm<RayTracer>(NoPlain{
+        "its straight-line twin, rt::render, makes the image alone (no ray tree, no "
+        "per-pixel samples); the tests hold the stepped pixels and ray trees to it bit for bit"});
 }
 
 }  // namespace cg

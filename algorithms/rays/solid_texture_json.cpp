@@ -95,7 +95,8 @@ struct JsonIo<SolidTextureAlgo> {
 };
 
 Algorithm solid_texture_algorithm() {
-    return make_algorithm<SolidTextureAlgo>();
+    return make_algorithm<SolidTextureAlgo>(
+        [](const SolidTextureAlgo::Input& in) { return SolidTextureAlgo::solve(in); });
 }
 
 }  // namespace cg

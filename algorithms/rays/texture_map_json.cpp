@@ -83,7 +83,8 @@ struct JsonIo<TextureMap> {
 };
 
 Algorithm texture_map_algorithm() {
-    return make_algorithm<TextureMap>();
+    return make_algorithm<TextureMap>(
+        [](const TextureMap::Input& in) { return TextureMap::solve(in); });
 }
 
 }  // namespace cg

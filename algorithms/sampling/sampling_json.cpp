@@ -208,7 +208,7 @@ struct JsonIo<Sampling> {
 };
 
 Algorithm sampling_algorithm() {
-    return make_algorithm<Sampling>();
+    return make_algorithm<Sampling>([](const Sampling::Input& in) { return Sampling::run(in); });
 }
 
 }  // namespace cg

@@ -173,7 +173,9 @@ struct JsonIo<Supersampling> {
 };
 
 Algorithm supersampling_algorithm() {
-    return make_algorithm<Supersampling>();
+    return make_algorithm<Supersampling>([](const Supersampling::Input& in) {
+        return in.is_study ? Supersampling::run_study(in) : Supersampling::supersample(in);
+    });
 }
 
 }  // namespace cg

@@ -194,7 +194,7 @@ struct JsonIo<Shading> {
 };
 
 Algorithm shading_algorithm() {
-    return make_algorithm<Shading>();
+    return make_algorithm<Shading>([](const Shading::Input& in) { return Shading::render(in); });
 }
 
 }  // namespace cg

@@ -61,7 +61,8 @@ struct JsonIo<ProjectiveShadow> {
 };
 
 Algorithm projective_shadow_algorithm() {
-    return make_algorithm<ProjectiveShadow>();
+    return make_algorithm<ProjectiveShadow>(
+        [](const ProjectiveShadow::Input& in) { return ProjectiveShadow::flatten(in); });
 }
 
 }  // namespace cg

@@ -179,7 +179,8 @@ struct JsonIo<ShadowMap> {
 };
 
 Algorithm shadow_map_algorithm() {
-    return make_algorithm<ShadowMap>();
+    return make_algorithm<ShadowMap>(
+        [](const ShadowMap::Input& in) { return ShadowMap::render(in); });
 }
 
 }  // namespace cg

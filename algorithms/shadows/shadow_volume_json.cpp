@@ -107,7 +107,8 @@ struct JsonIo<ShadowVolume> {
 };
 
 Algorithm shadow_volume_algorithm() {
-    return make_algorithm<ShadowVolume>();
+    return make_algorithm<ShadowVolume>(
+        [](const ShadowVolume::Input& in) { return ShadowVolume::solve(in); });
 }
 
 }  // namespace cg

@@ -46,7 +46,8 @@ struct JsonIo<ArbitraryAxis> {
 };
 
 Algorithm arbitrary_axis_algorithm() {
-    return make_algorithm<ArbitraryAxis>();
+    return make_algorithm<ArbitraryAxis>(
+        [](const ArbitraryAxis::Input& in) { return ArbitraryAxis::rotate(in); });
 }
 
 }  // namespace cg

@@ -97,7 +97,8 @@ struct JsonIo<ChangeOfBasis> {
 };
 
 Algorithm change_of_basis_algorithm() {
-    return make_algorithm<ChangeOfBasis>();
+    return make_algorithm<ChangeOfBasis>(
+        [](const ChangeOfBasis::Input& in) { return ChangeOfBasis::transform(in); });
 }
 
 }  // namespace cg

@@ -39,7 +39,8 @@ struct JsonIo<EulerAngles> {
 };
 
 Algorithm euler_angles_algorithm() {
-    return make_algorithm<EulerAngles>();
+    return make_algorithm<EulerAngles>(
+        [](const EulerAngles::Input& in) { return EulerAngles::compose(in); });
 }
 
 }  // namespace cg

@@ -79,6 +79,9 @@ struct JsonIo<NormalTransform> {
     }
 };
 
-Algorithm normal_transform_algorithm() { return make_algorithm<NormalTransform>(); }
+Algorithm normal_transform_algorithm() {
+    return make_algorithm<NormalTransform>(
+        [](const NormalTransform::Input& in) { return NormalTransform::transform(in); });
+}
 
 }  // namespace cg

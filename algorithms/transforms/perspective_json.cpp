@@ -196,6 +196,9 @@ struct JsonIo<Perspective> {
     }
 };
 
-Algorithm perspective_algorithm() { return make_algorithm<Perspective>(); }
+Algorithm perspective_algorithm() {
+    return make_algorithm<Perspective>(
+        [](const Perspective::Input& in) { return Perspective::project(in); });
+}
 
 }  // namespace cg

@@ -136,7 +136,8 @@ struct JsonIo<Quaternion> {
 };
 
 Algorithm quaternion_algorithm() {
-    return make_algorithm<Quaternion>();
+    return make_algorithm<Quaternion>(
+        [](const Quaternion::Input& in) { return Quaternion::compute(in); });
 }
 
 }  // namespace cg

@@ -164,7 +164,8 @@ struct JsonIo<SceneDag> {
 };
 
 Algorithm scene_dag_algorithm() {
-    return make_algorithm<SceneDag>();
+    return make_algorithm<SceneDag>(
+        [](const SceneDag::Input& in) { return SceneDag::traverse(in); });
 }
 
 }  // namespace cg

@@ -59,7 +59,7 @@ struct JsonIo<Slerp> {
 };
 
 Algorithm slerp_algorithm() {
-    return make_algorithm<Slerp>();
+    return make_algorithm<Slerp>([](const Slerp::Input& in) { return Slerp::interpolate(in); });
 }
 
 }  // namespace cg

@@ -89,7 +89,13 @@ struct JsonIo<Arcball> {
     }
 };
 
-Algorithm virtual_sphere_algorithm() { return make_algorithm<VirtualSphere>(); }
-Algorithm arcball_algorithm() { return make_algorithm<Arcball>(); }
+Algorithm virtual_sphere_algorithm() {
+    return make_algorithm<VirtualSphere>(
+        [](const VirtualSphere::Input& in) { return VirtualSphere::drag(in); });
+}
+Algorithm arcball_algorithm() {
+    return make_algorithm<Arcball>(
+        [](const Arcball::Input& in) { return Arcball::drag(in); });
+}
 
 }  // namespace cg

@@ -130,6 +130,9 @@ struct JsonIo<WindowViewport> {
     }
 };
 
-Algorithm window_viewport_algorithm() { return make_algorithm<WindowViewport>(); }
+Algorithm window_viewport_algorithm() {
+    return make_algorithm<WindowViewport>(
+        [](const WindowViewport::Input& in) { return WindowViewport::map(in); });
+}
 
 }  // namespace cg

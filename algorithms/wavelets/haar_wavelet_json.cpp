@@ -203,7 +203,8 @@ struct JsonIo<HaarWavelet> {
 };
 
 Algorithm haar_wavelet_algorithm() {
-    return make_algorithm<HaarWavelet>();
+    return make_algorithm<HaarWavelet>(
+        [](const HaarWavelet::Input& in) { return HaarWavelet::compute(in); });
 }
 
 }  // namespace cg

@@ -7,6 +7,10 @@
 #include "core/scene.hpp"
 #include "core/timeline.hpp"
 #include "fuzz_support.hpp"
+#include "json_mutator.hpp"
+
+// The whole input is one JSON document: mutate it within its shape (json_mutator.hpp).
+CG_FUZZ_JSON_MUTATOR(0, nullptr)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

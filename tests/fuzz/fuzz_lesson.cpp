@@ -1,7 +1,11 @@
 // Lesson files: parse and check one lesson as the lesson loader does (its presets are run
 // through their algorithm's validation). Only InputError may escape.
 #include "fuzz_support.hpp"
+#include "json_mutator.hpp"
 #include "io/lesson.hpp"
+
+// The whole input is one JSON document: mutate it within its shape (json_mutator.hpp).
+CG_FUZZ_JSON_MUTATOR(0, nullptr)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

@@ -3,7 +3,11 @@
 // the ray counts add up (samples_per_pixel primary rays per pixel). Only InputError may escape;
 // scenes too costly for a fuzz iteration (fuzz_support.hpp) are validated but not rendered.
 #include "fuzz_support.hpp"
+#include "json_mutator.hpp"
 #include "rays/rt_scene.hpp"
+
+// The whole input is one JSON document: mutate it within its shape (json_mutator.hpp).
+CG_FUZZ_JSON_MUTATOR(0, nullptr)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
