@@ -1,6 +1,6 @@
 // What must hold for every accepted input of every registered algorithm (issue 25): the fuzz
 // target fuzz_algorithm_input checks it on every input that passes validation, and the normal
-// suite on every algorithm's example and mutations of it (tests/robustness/test_oracles.cpp).
+// suite on every algorithm's example and mutations of it (tests/robustness/test_fuzz_oracles.cpp).
 //
 //   finite       every coordinate drawn (2D and 3D) and every number in the result is finite,
 //                and no narration, formula or variable reads "nan" or "inf"
