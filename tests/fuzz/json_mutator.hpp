@@ -105,7 +105,14 @@ inline void mutate_float(json& n, Rng& rng, Nodes& all) {
 }
 
 inline void mutate_number(json& n, Rng& rng, Nodes& all) {
-    if (n.is_number_integer() && rng.chance(0.9)) mutate_integer(n, rng, all);
+    // Integer arithmetic only well inside the range: v + 1 or 2v on the largest integers
+    // would overflow (undefined behaviour, which the sanitizer build would report as a find).
+    constexpr long long kLimit = 1LL << 52;
+    const bool small = n.is_number_unsigned()
+                           ? n.get<unsigned long long>() < static_cast<unsigned long long>(kLimit)
+                           : n.is_number_integer() && n.get<long long>() > -kLimit &&
+                                 n.get<long long>() < kLimit;
+    if (small && rng.chance(0.9)) mutate_integer(n, rng, all);
     else mutate_float(n, rng, all);
 }
 
@@ -123,7 +130,7 @@ inline void mutate_points(json& a, Rng& rng) {
     const double t = rng.chance(0.5) ? kT[rng.integer(0, 3)] : rng.uniform(-2, 3);
     for (std::size_t c = 0; c < a[k].size(); ++c) {  // collinear with i and j
         const double p = a[i][c].get<double>(), q = a[j][c].get<double>();
-        a[k][c] = p + t * (q - p);
+        if (const double x = p + t * (q - p); std::isfinite(x)) a[k][c] = x;
     }
 }
 
