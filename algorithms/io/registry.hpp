@@ -1,8 +1,9 @@
 // The registry: every algorithm by id, behind one type-erased interface.
 //
 // The viewer, the CLI and the tests know algorithms only through this. An algorithm joins by
-// providing its JSON adapter (a specialisation of JsonIo, in its own *_json.cpp) and one line
-// in algorithms/algorithms.def.
+// providing its JSON adapter (a specialisation of JsonIo, in its own *_json.cpp, which also
+// makes its Algorithm with make_algorithm<A>(plain) or make_algorithm<A>(NoPlain{why})) and
+// one line in algorithms/algorithms.def.
 #pragma once
 
 #include <concepts>
