@@ -159,6 +159,11 @@ inline double eval_F(const QuadricCoefficients& f, glm::dvec3 p) {
 inline glm::dvec3 gradient(const QuadricCoefficients& f, glm::dvec3 p) {
     return {2 * f.A * p.x, 2 * f.B * p.y, 2 * f.C * p.z + f.D};
 }
+// |v| without overflow or underflow: std::hypot's three-argument form scales as unit() does,
+// so the length a narration shows beside v/|v| is the one that made it (|(1e300, 0, 0)| is
+// 1e300, not the inf of √(x² + y² + z²)).
+inline double length_of(glm::dvec3 v) { return std::hypot(v.x, v.y, v.z); }
+
 // A unit vector along v without overflow or underflow; (0, 0, 0) for v = 0. The usual
 // v/|v| when |v|² is a comfortable number (a unit axis stays exact: √(x²) = |x|), else v is
 // first scaled by its largest component.

@@ -725,7 +725,7 @@ void narrate_normals(const Shading::State& s, StepInfo& info) {
             const int v = shown[a];
             info.narration += (a ? "; " : "") + std::string("n_") + std::to_string(v) + " = " +
                               num(in.mesh.normals[v], 4) + "/" +
-                              num(glm::length(in.mesh.normals[v]), 4) + " = " + num(normals[v], 4);
+                              num(length_of(in.mesh.normals[v]), 4) + " = " + num(normals[v], 4);
             info.math += (a ? ",\\quad " : "") + std::string("n_{") + std::to_string(v) +
                          "} = " + tex(normals[v], 4);
         }

@@ -740,3 +740,22 @@ TEST_CASE("shading: the picture shows the run beside the other two models and th
         if (!p.closed && !p.points.empty() && p.points[0].y < 0) thick_end += p.style.width > 2.5f;
     CHECK(thick_end == 1);
 }
+
+// Found by fuzz_algorithm_input (tests/fuzz/regressions/fuzz_algorithm_input/
+// shading-normal-1e300-length): a given normal of length 1e300 was normalised right, but the
+// narration divided by |n| computed as √(x² + y² + z²), which overflowed to "inf".
+TEST_CASE("shading: a huge given normal narrates its true length, not inf", "[shading]") {
+    const cg::Registry registry = cg::builtin_registry();
+    const cg::json input = cg::json::parse(R"({"width":12,"height":10,
+        "mesh":{"vertices":[[2,1,5],[10,1,7],[2,9,9]],
+                "normals":[[0,0,-1],[0.6,0,-0.8],[-1e+300,0.6,-0.8]],"triangles":[[0,1,2]]},
+        "model":"phong","lighting":{"model":"phong","eye":[6,5,-19],"ambient":1,
+        "material":{"ka":0.1,"kd":1.0,"ks":0,"shininess":1},
+        "lights":[{"direction":[0,0,1],"intensity":1}]},"pixel":[4,3]})");
+    auto run = registry.find("shading")->create(input);
+    cg::StepInfo info;
+    run->step(&info);
+    CHECK(info.event == "normals-given");
+    CHECK_THAT(info.narration, Catch::Contains("n_2 = (-1e+300, 0.6, -0.8)/1e+300 = (-1, 6e-301, -8e-301)"));
+    CHECK(info.narration.find("inf") == std::string::npos);
+}
