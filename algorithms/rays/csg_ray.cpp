@@ -358,7 +358,9 @@ void narrate_leaf(const CsgRay::State& s, int k, StepInfo& info) {
             if (tr.direction[i] == 0)
                 slabs += h.parallel_outside[i] ? "parallel, outside" : "parallel, inside";
             else
-                slabs += "[" + num(h.t0[i]) + ", " + num(h.t1[i]) + "]";
+                // A direction component so small that (plane − E)/d overflows: that end is
+                // beyond every double, written ∓∞ as the spans are.
+                slabs += "[" + end_text(h.t0[i]) + ", " + end_text(h.t1[i]) + "]";
         }
         text += "Slabs: " + slabs + "; t_near = max = " + end_text(h.t_near) +
                 ", t_far = min = " + end_text(h.t_far);

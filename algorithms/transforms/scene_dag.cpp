@@ -530,12 +530,15 @@ std::vector<dvec3> SceneDag::corners(const dmat4& m) {
 // root as segments between the frames' origins, each labelled with its node; the current
 // node's frame (the top matrix's columns at its origin).
 void SceneDag::draw(const State& s, Scene& scene) {
+    // Lengths by hypot, not √(x² + y² + z²): a part translated by 1e300 has a finite distance
+    // whose square overflows. Beyond 1e300 the picture's reach is the same anyway.
+    const auto length = [](dvec3 v) { return std::hypot(v.x, v.y, v.z); };
     double reach = 1.0;
     for (const Draw& d : expand(s.in, false))
-        reach = std::max(reach, glm::length(dvec3(d.matrix[3])));
+        reach = std::max(reach, length(dvec3(d.matrix[3])));
     for (const Draw& d : expand(s.in, true))
-        for (const dvec3& c : corners(d.matrix)) reach = std::max(reach, glm::length(c));
-    scene.extent3 = 1.1 * reach;
+        for (const dvec3& c : corners(d.matrix)) reach = std::max(reach, length(c));
+    scene.extent3 = 1.1 * std::min(reach, 1e300);
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, "", 0.5f});
 
     static constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
@@ -566,7 +569,7 @@ void SceneDag::draw(const State& s, Scene& scene) {
         const dmat4& m = s.stack.back();
         auto unit = [](glm::dvec4 v) {
             const dvec3 u(v);
-            const double l = glm::length(u);
+            const double l = std::hypot(u.x, u.y, u.z);
             return l > 0 ? u / l : u;
         };
         scene.frames3.push_back({dvec3(m[3]), unit(m[0]), unit(m[1]), unit(m[2]), 0.8,

@@ -713,3 +713,21 @@ TEST_CASE("csg-ray: the worked example of the course's question matches its gold
     REQUIRE(r.exit_code == 0);
     CHECK(r.out == golden.str());
 }
+
+TEST_CASE("csg-ray: a direction component of 5e-324 overflows the slab's ends to infinity, said as ∞",
+          "[rays][csg]") {
+    // Found by fuzz_algorithm_input (its oracle: no "inf" in a narration): (3 − 0)/5e-324 is
+    // beyond every double, and the slab's interval was printed "[-inf, inf]".
+    const cg::json in = cg::json::parse(R"({"tree": {"name": "B", "primitive":
+        {"type": "box", "min": [-1, -1, -1], "max": [3, 2, 2]}},
+        "origin": [0, 0, 5], "direction": [5e-324, 0, -1]})");
+    auto run = cg::builtin_registry().find("csg-ray")->create(in);
+    bool said = false;
+    while (!run->done()) {
+        cg::StepInfo info;
+        run->step(&info);
+        CHECK(info.narration.find("inf") == std::string::npos);
+        said = said || info.narration.find("x [−∞, ∞]") != std::string::npos;
+    }
+    CHECK(said);
+}

@@ -446,3 +446,21 @@ TEST_CASE("scene-dag: the picture shows the boxes, the path and the current fram
     CHECK(scene.extent3 > 2);
     CHECK(scene.faces3.back().style.role == cg::Role::Active);
 }
+
+TEST_CASE("scene-dag: a part translated by 1e300 keeps the picture's extent finite",
+          "[transforms][scene-dag]") {
+    // Found by fuzz_algorithm_input: glm::length squared the translation and overflowed.
+    const cg::json in = cg::json::parse(R"({"nodes": [
+        {"name": "table", "children": ["top", "far"]},
+        {"name": "top", "transform": {"scale": [2, 0.1, 1]}, "shape": "box"},
+        {"name": "far", "transform": {"translate": [1e300, 0, 0.4], "scale": [1e-3, 1e-3, 1e-3]},
+         "shape": "box"}], "root": "table"})");
+    auto run = cg::builtin_registry().find("scene-dag")->create(in);
+    while (!run->done()) {
+        run->step(nullptr);
+        cg::Scene scene;
+        run->draw(scene);
+        CHECK(std::isfinite(scene.extent3));
+        CHECK(scene.extent3 >= 1e300);
+    }
+}
