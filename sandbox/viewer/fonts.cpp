@@ -17,6 +17,7 @@ constexpr const char* kBoldPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans-B
 constexpr ImWchar kGlyphRanges[] = {
     0x0020, 0x024F,  // Basic Latin, Latin-1 (² ³ ·), Latin Extended
     0x02B0, 0x02FF,  // Spacing Modifier Letters (superscripts ʰ ʲ ʳ ˢ ˣ)
+    0x0300, 0x036F,  // Combining Diacritical Marks (the hat of a unit vector: d̂, n̂, q̂)
     0x0370, 0x03FF,  // Greek (θ φ γ)
     0x1D00, 0x1DBF,  // Phonetic Extensions (superscripts ᵃ ᵏ ᵀ, subscript ᵢ)
     0x2000, 0x206F,  // General Punctuation (– — … • thin and em spaces)
@@ -38,6 +39,25 @@ ImFont* add_font(const char* path, float size) {
     config.OversampleH = 2;
     config.OversampleV = 2;
     return ImGui::GetIO().Fonts->AddFontFromFileTTF(path, size, &config, kGlyphRanges);
+}
+
+// A combining mark (the hat of d̂) belongs over the letter before it. ImGui draws text glyph by
+// glyph, advancing by each glyph's width, and the fonts give the marks a width of their own (the
+// monospaced face a whole cell), so "d̂" came out as "d ˆ". Once the atlas is built, each mark
+// gets no width and moves back over the middle of a typical letter ('x'), so it sits on the
+// letter it follows.
+void overlay_combining_marks(ImFont* font) {
+    const ImFontGlyph* x = font->FindGlyphNoFallback('x');
+    if (!x) return;
+    for (ImWchar c = 0x0300; c <= 0x036F; ++c) {
+        auto* g = const_cast<ImFontGlyph*>(font->FindGlyphNoFallback(c));
+        if (!g) continue;
+        const float shift = -0.5f * x->AdvanceX - 0.5f * (g->X0 + g->X1);
+        g->X0 += shift;
+        g->X1 += shift;
+        g->AdvanceX = 0;
+        if (c < font->IndexAdvanceX.Size) font->IndexAdvanceX[c] = 0;
+    }
 }
 
 void apply_style() {
@@ -77,6 +97,8 @@ Fonts setup_fonts_and_style() {
         fonts.ui = fonts.mono = fonts.large = fonts.small = fonts.bold = fonts.title =
             io.Fonts->AddFontDefault();
     }
+    io.Fonts->Build();
+    for (ImFont* font : io.Fonts->Fonts) overlay_combining_marks(font);
     return fonts;
 }
 
