@@ -107,6 +107,10 @@ struct Spec {
     std::vector<EventKind> events;
     std::vector<Slider> sliders = {};  // none for most algorithms
     Study study = {};
+    // For an animation, whose steps are frames: the step variable holding the simulated time in
+    // seconds ("t"). The viewer's Play then runs at real time (or slowed down, or sped up):
+    // it takes every step whose time has come. Empty for everything else.
+    std::string clock = {};
 };
 
 // Bad input, refused at the start of a run. `field` is a path into the input as the user

@@ -100,6 +100,8 @@ Algorithm make_algorithm() {
         {},
         {},
         {},
+        {},
+        {},
     };
     if constexpr (HasExam<A>) {
         a.exam_input = [](std::uint64_t seed) {

@@ -51,15 +51,25 @@ void draw_stepping(Session& s) {
     s.note_widget("Play");
     tooltip("Step on by itself, stopping at a breakpoint  (P)");
     // The sliders' numbers go beside them, not on them, where the grab would cover them.
+    // An animation (its steps are frames) plays at real time, slowed down or sped up.
+    const bool animation = s.algorithm && !s.algorithm->spec->clock.empty();
     char rate[32];
-    std::snprintf(rate, sizeof rate, "%.1f steps/s", s.steps_per_second);
+    if (animation)
+        std::snprintf(rate, sizeof rate, "%.2f× real time", s.time_scale);
+    else
+        std::snprintf(rate, sizeof rate, "%.1f steps/s", s.steps_per_second);
     const float speed = ImGui::GetFontSize() * (compact ? 4 : 6);
-    flow(speed + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("60.0 steps/s").x);
+    flow(speed + ImGui::GetStyle().ItemInnerSpacing.x +
+         ImGui::CalcTextSize(animation ? "0.10× real time" : "60.0 steps/s").x);
     ImGui::SetNextItemWidth(speed);
-    ImGui::SliderFloat("##speed", &s.steps_per_second, 0.5f, 60.0f, "",
-                       ImGuiSliderFlags_Logarithmic);
+    if (animation)
+        ImGui::SliderFloat("##speed", &s.time_scale, 0.1f, 4.0f, "", ImGuiSliderFlags_Logarithmic);
+    else
+        ImGui::SliderFloat("##speed", &s.steps_per_second, 0.5f, 60.0f, "",
+                           ImGuiSliderFlags_Logarithmic);
     s.note_widget("speed");
-    tooltip("Play's speed");
+    tooltip(animation ? "Play's speed: 1 is real time (the simulated seconds pass as seconds)"
+                      : "Play's speed");
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(rate);

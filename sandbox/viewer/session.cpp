@@ -237,17 +237,47 @@ void Session::toggle_play() {
     if (timeline->at_end()) timeline->reset();
     playing = true;
     play_clock = 1;  // the first step comes at once, so Play visibly responds
+    play_time = clock_now().value_or(0);
+}
+
+std::optional<double> Session::clock_now() const {
+    if (!timeline || !algorithm || algorithm->spec->clock.empty()) return std::nullopt;
+    const StepInfo* last = timeline->last_step();
+    if (!last) return 0.0;
+    for (const Var& v : last->vars) {
+        if (v.name != algorithm->spec->clock) continue;
+        if (const double* d = std::get_if<double>(&v.value)) return *d;
+        if (const long long* i = std::get_if<long long>(&v.value)) return static_cast<double>(*i);
+    }
+    return std::nullopt;
+}
+
+bool Session::play_step() {
+    if (forward_locked(index() + 1) || !timeline->forward() || on_breakpoint()) {
+        playing = false;
+        return false;
+    }
+    return true;
 }
 
 void Session::advance(double seconds) {
     if (!playing || !timeline) return;
-    // A stalled frame must not turn into a burst of steps.
-    play_clock = std::min(play_clock + seconds * steps_per_second, 3.0);
-    while (play_clock >= 1) {
-        play_clock -= 1;
-        if (forward_locked(index() + 1) || !timeline->forward() || on_breakpoint()) {
-            playing = false;
-            break;
+    if (std::optional<double> now = clock_now()) {
+        // An animation: every step whose simulated time has come, so that it plays at
+        // time_scale × real time. Behind by more than a quarter of a second of simulated time
+        // (a stalled frame, or steps too small to keep up with), it lets the debt go rather
+        // than race: the animation slows down instead of skipping.
+        play_time = std::min(play_time + seconds * time_scale, *now + 0.25 * time_scale);
+        for (int taken = 0; now && *now < play_time && taken < kMaxPlayStepsPerFrame; ++taken) {
+            if (!play_step()) break;
+            now = clock_now();
+        }
+    } else {
+        // A stalled frame must not turn into a burst of steps.
+        play_clock = std::min(play_clock + seconds * steps_per_second, 3.0);
+        while (play_clock >= 1) {
+            play_clock -= 1;
+            if (!play_step()) break;
         }
     }
     if (timeline->at_end()) playing = false;

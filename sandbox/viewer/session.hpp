@@ -142,8 +142,18 @@ struct Session {
     // --- stepping ---
     std::set<int> breakpoints;  // pseudocode lines, 1-based
     bool playing = false;
+    static constexpr int kMaxPlayStepsPerFrame = 2000;  // an animation's steps in one frame, at most
     float steps_per_second = 2.0f;
     double play_clock = 0;  // steps owed to Play; one is taken whenever it reaches 1
+    // Animations (Spec::clock): Play keeps the simulated time `time_scale` times the wall
+    // clock's; play_time is the simulated time Play has reached.
+    float time_scale = 1.0f;
+    double play_time = 0;
+    // The current state's simulated time (the clock variable of the step that led to it; 0 at
+    // the start); none when the algorithm is not an animation or the step does not say.
+    std::optional<double> clock_now() const;
+    // One step of Play: false, and Play stopped, at a locked step, the end or a breakpoint.
+    bool play_step();
 
     CanvasState canvas;
     Box canvas_rect{{0, 0}, {0, 0}};  // where the last frame put the canvas (display pixels)

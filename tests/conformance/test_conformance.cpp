@@ -76,6 +76,7 @@ TEST_CASE("conformance: every algorithm is deterministic, resumable and self-des
             auto run = a.create(in.input);
             states.push_back(run->clone());
             std::size_t guard = 0;
+            double clock = 0;  // an animation's simulated time (Spec::clock), never going back
             while (!run->done()) {
                 REQUIRE(++guard < 1'000'000);
                 cg::StepInfo info;
@@ -89,6 +90,17 @@ TEST_CASE("conformance: every algorithm is deterministic, resumable and self-des
                 CHECK_FALSE(info.narration.empty());
                 CHECK(info.narration.find("nan") == std::string::npos);
                 CHECK(info.narration.find("NaN") == std::string::npos);
+                if (!spec.clock.empty()) {
+                    // Every step of an animation says its time, so that Play can keep real time.
+                    const cg::Var* t = nullptr;
+                    for (const cg::Var& v : info.vars) t = v.name == spec.clock ? &v : t;
+                    REQUIRE(t != nullptr);
+                    REQUIRE(std::holds_alternative<double>(t->value));
+                    const double now = std::get<double>(t->value);
+                    CHECK(std::isfinite(now));
+                    CHECK(now >= clock);
+                    clock = now;
+                }
                 cg::Scene scene;
                 run->draw(scene);
                 check_scene(scene);

@@ -131,3 +131,51 @@ TEST_CASE("checkpoint: the open lesson, its preset and the exam survive saving a
     wrong["exam_seed"] = "seven";
     CHECK_THROWS_WITH(cg::checkpoint_from_json(wrong, registry()), Catch::Contains("exam_seed"));
 }
+
+TEST_CASE("session: an animation plays at real time or at the speed slider's pace",
+          "[gui][session][animation]") {
+    int animations = 0;
+    for (const cg::Algorithm& a : registry().all()) {
+        if (a.spec->clock.empty()) continue;
+        ++animations;
+        CAPTURE(a.spec->id);
+        cg::viewer::Session s = session();
+        s.choose(a);
+        REQUIRE(s.clock_now() == 0.0);
+        // One time step: the first step that moves the clock.
+        double dt = 0;
+        while (dt == 0 && !s.at_end()) {
+            s.step_forward();
+            dt = s.clock_now().value_or(0);
+        }
+        REQUIRE(dt > 0);
+        // Wall-clock frames of 20 ms: Play takes every step whose time has come (the first at
+        // once), no more.
+        for (float scale : {1.0f, 0.25f, 2.0f}) {
+            CAPTURE(scale);
+            s.reset();
+            s.time_scale = scale;
+            s.toggle_play();
+            REQUIRE(s.playing);
+            double wall = 0;
+            for (int frame = 0; frame < 10 && s.playing; ++frame) {
+                s.advance(0.02);
+                wall += 0.02;
+            }
+            // The frame shown is the one whose interval holds the time played: P ≤ t < P + dt.
+            const double t = s.clock_now().value(), played = wall * scale;
+            CHECK(t < played + dt - 1e-9);
+            if (s.playing) CHECK(t >= played - 1e-9);
+        }
+        // A stalled frame is not made up in a burst: at most a quarter of a second more.
+        s.reset();
+        s.time_scale = 1;
+        s.toggle_play();
+        s.advance(5.0);
+        CHECK(s.clock_now().value() < 0.25 + dt - 1e-9);
+        // Everything else keeps its steps a second.
+        s.choose(*registry().find("liang-barsky"));
+        CHECK_FALSE(s.clock_now().has_value());
+    }
+    CHECK(animations >= 1);
+}

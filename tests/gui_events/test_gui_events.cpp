@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <chrono>
 #include <filesystem>
 
 #include "gui_events/driver.hpp"
@@ -122,6 +123,35 @@ TEST_CASE("gui events: Step and Back, by button and by key", "[gui-events]") {
     CHECK(d.session().index() == 0);
     d.click("Run to end");
     CHECK(d.session().at_end());
+}
+
+TEST_CASE("gui events: Play runs an animation at real time, then P pauses it", "[gui-events]") {
+    Driver d;
+    d.click("tab:Algorithm");
+    d.session().choose(*cg::test::gui_registry().find("spring-mass"));
+    d.frames(2);
+    REQUIRE(d.session().clock_now() == 0.0);
+    const auto frame = d.viewer().last_frame();
+    const auto start = std::chrono::steady_clock::now();
+    d.click("Play");
+    CHECK(d.session().playing);
+    d.wait_ms(600);
+    d.key(SDLK_p);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK_FALSE(d.session().playing);
+    // Simulated seconds passed as seconds: the example's 0.02 s steps came dozens at a time,
+    // where steps-a-second would have taken two or three; never ahead of the wall clock (one
+    // step at most), and behind it only by frames the loaded machine stalled.
+    const double t = d.session().clock_now().value();
+    CAPTURE(t, wall, d.session().index());
+    CHECK(t >= 0.3);
+    CHECK(t <= wall + 0.02 + 1e-9);
+    CHECK(Driver::changed(frame, d.viewer().last_frame(), d.size(),
+                          {{0, 0}, {double(d.size().x), double(d.size().y)}}) > 100);
+    // Paused: time stands still.
+    const double paused = t;
+    d.wait_ms(100);
+    CHECK(d.session().clock_now().value() == paused);
 }
 
 TEST_CASE("gui events: typing a number into a field restarts the run on it", "[gui-events]") {
