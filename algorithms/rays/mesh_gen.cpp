@@ -9,6 +9,7 @@
 #include "core/rng.hpp"
 #include "core/step.hpp"
 #include "curves/bezier_patch.hpp"
+#include "modelling/fractal_terrain.hpp"
 
 namespace cg::mesh {
 
@@ -138,8 +139,8 @@ Mesh sphere(const SphereParams& p) {
 
 Mesh terrain(const TerrainParams& p) {
     const int n = p.resolution;
-    int N = 1;
-    while (N < n) N *= 2;
+    int N = 1, levels = 0;
+    while (N < n) N *= 2, ++levels;
     const std::size_t side = static_cast<std::size_t>(N) + 1;
     std::vector<double> h(side * side, 0.0);
     auto at = [&](int i, int j) -> double& { return h[static_cast<std::size_t>(j) * side + i]; };
@@ -148,27 +149,8 @@ Mesh terrain(const TerrainParams& p) {
     at(N, 0) = rng.uniform(-1, 1);
     at(0, N) = rng.uniform(-1, 1);
     at(N, N) = rng.uniform(-1, 1);
-    double a = p.roughness;
-    for (int step = N; step > 1; step /= 2, a *= p.roughness) {
-        const int half = step / 2;
-        // Diamond step: each square's centre from its four corners.
-        for (int j = half; j < N; j += step)
-            for (int i = half; i < N; i += step)
-                at(i, j) = 0.25 * (at(i - half, j - half) + at(i + half, j - half) +
-                                   at(i - half, j + half) + at(i + half, j + half)) +
-                           rng.uniform(-a, a);
-        // Square step: each edge midpoint from its diamond's three or four corners.
-        for (int j = 0; j <= N; j += half)
-            for (int i = (j / half) % 2 == 0 ? half : 0; i <= N; i += step) {
-                double sum = 0;
-                int count = 0;
-                if (i - half >= 0) sum += at(i - half, j), ++count;
-                if (i + half <= N) sum += at(i + half, j), ++count;
-                if (j - half >= 0) sum += at(i, j - half), ++count;
-                if (j + half <= N) sum += at(i, j + half), ++count;
-                at(i, j) = sum / count + rng.uniform(-a, a);
-            }
-    }
+    // The amplitude ρ at the first level, ρ² at the second, … (modelling/fractal_terrain).
+    fractal::diamond_square(h, levels, p.roughness, p.roughness, rng);
     double big = 0;
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) big = std::max(big, std::fabs(at(i, j)));

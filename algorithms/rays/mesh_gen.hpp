@@ -20,7 +20,8 @@
 // the amplitude a = ρ, ρ², ρ³, …, each square's centre becomes the average of its four corners
 // plus uniform(−a, a) (the diamond step), and each edge midpoint the average of its (three or
 // four) diamond neighbours plus uniform(−a, a) (the square step), in a fixed order from one
-// generator (core/rng.hpp) seeded by `seed`: the same seed, the same terrain. The heights are
+// generator (core/rng.hpp) seeded by `seed`: the same seed, the same terrain (the levels are
+// modelling/fractal_terrain's fractal::diamond_square, the stepped lesson's code). The heights are
 // then scaled so that the largest |height| kept is h (all zero stays zero). Vertex (i, j) (row
 // j along z, column i along x) is at (x, y, z) = center + (w (i/n − ½), height, d (j/n − ½));
 // its normal is the unit (−∂y/∂x, 1, −∂y/∂z) by central differences (one-sided on the border),
