@@ -14,18 +14,31 @@ export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
 "$build/bin/fuzz_seeds" "$fuzz/seeds" lessons || exit 1
 mkdir -p "$fuzz/artifacts" "$fuzz/logs"
-status=0
-for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study; do
-  seeds=$fuzz/seeds/$t
+# The targets run FUZZ_JOBS at a time (default: one per core), each for its full SECONDS of wall
+# time; their summaries print in the fixed order below once all have finished.
+jobs=${FUZZ_JOBS:-$(nproc)}
+targets=(fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study)
+run_target() {
+  local t=$1 seeds=$fuzz/seeds/$1
   [[ $t == fuzz_lesson ]] && seeds=lessons
   [[ $t == fuzz_scene ]] && seeds=tests/golden/ray-tracer
   [[ $t == fuzz_obj ]] && seeds=tests/data
   mkdir -p "$fuzz/corpus/$t"
-  log=$fuzz/logs/$t.log
+  local log=$fuzz/logs/$t.log
   "$build/bin/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
     -print_final_stats=1 -artifact_prefix="$fuzz/artifacts/$t-" \
-    "$fuzz/corpus/$t" "$seeds" "tests/fuzz/regressions/$t" >"$log" 2>&1
-  rc=$?
+    "$fuzz/corpus/$t" "tests/fuzz/corpus/$t" "$seeds" "tests/fuzz/regressions/$t" >"$log" 2>&1
+  echo $? >"$fuzz/logs/$t.rc"
+}
+for t in "${targets[@]}"; do
+  while (( $(jobs -rp | wc -l) >= jobs )); do wait -n; done
+  run_target "$t" &
+done
+wait
+status=0
+for t in "${targets[@]}"; do
+  log=$fuzz/logs/$t.log
+  rc=$(cat "$fuzz/logs/$t.rc")
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$')
   found=$([[ $rc == 0 ]] && echo "nothing" || echo "FAILED (exit $rc, see $log)")
   echo "$t: ${seconds} s, ${execs:-?} executions, corpus $(ls "$fuzz/corpus/$t" | wc -l) files, found: $found"
