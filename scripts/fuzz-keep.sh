@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# After a long `make fuzz`: minimises each target's grown corpus (build-sanitize/fuzz/corpus/<t>,
+# plus what tests/fuzz/corpus/<t> held) into tests/fuzz/corpus/<t>, keeping only the inputs that
+# reach code the seeds do not (libFuzzer's -merge=1 with the seeds counted as covered first), so
+# that CTest's 30-second runs start where the long run got to. Prints each target's count.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+build=build-sanitize
+fuzz=$build/fuzz
+export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
+"$build/bin/fuzz_seeds" "$fuzz/seeds" lessons || exit 1
+for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study; do
+  seeds=$fuzz/seeds/$t
+  [[ $t == fuzz_lesson ]] && seeds=lessons
+  [[ $t == fuzz_scene ]] && seeds=tests/golden/ray-tracer
+  [[ $t == fuzz_obj ]] && seeds=tests/data
+  merged=$(mktemp -d)
+  # The seeds go in first, so that their coverage counts as had; they are taken out after.
+  for f in "$seeds"/*; do [[ -f $f ]] && cp "$f" "$merged/seed-$(basename "$f")"; done
+  "$build/bin/$t" -merge=1 -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
+    "$merged" "$fuzz/corpus/$t" "tests/fuzz/corpus/$t" >"$fuzz/logs/$t.merge.log" 2>&1 || {
+    echo "$t: the merge failed, see $fuzz/logs/$t.merge.log"
+    rm -rf "$merged"
+    exit 1
+  }
+  rm -f "$merged"/seed-*
+  find "tests/fuzz/corpus/$t" -type f ! -name .gitkeep -delete
+  cp "$merged"/* "tests/fuzz/corpus/$t/" 2>/dev/null
+  rm -rf "$merged"
+  echo "$t: $(find "tests/fuzz/corpus/$t" -type f ! -name .gitkeep | wc -l) inputs kept ($(du -sh "tests/fuzz/corpus/$t" | cut -f1))"
+done
