@@ -106,7 +106,12 @@ std::size_t scene_triangles(const Scene& s) {
 
 TriangleMesh make_triangle_mesh(mesh::Mesh m, std::vector<std::uint32_t> source) {
     TriangleMesh t;
-    for (dvec3& n : m.normals) n = unit(n);  // as a triangle object's are, in prepare
+    // Made unit, as a triangle object's are in prepare; but a normal already unit to rounding
+    // is kept as it is. unit() is not idempotent (unit(unit(n)) can differ from unit(n) in the
+    // last bit), and a scene written out lists its meshes' normals as they stand here: read
+    // back, they must come out the same (a fuzz find, tests/fuzz/regressions/fuzz_scene/).
+    for (dvec3& n : m.normals)
+        if (!(std::fabs(glm::dot(n, n) - 1) <= 1e-14)) n = unit(n);
     t.bvh = build_mesh_bvh(m);
     for (const auto& tri : m.triangles)
         for (std::uint32_t i : tri) t.reach = std::max(t.reach, glm::length(m.vertices[i]));
