@@ -3,6 +3,11 @@
 # plus what tests/fuzz/corpus/<t> held) into tests/fuzz/corpus/<t>, keeping only the inputs that
 # reach code the seeds do not (libFuzzer's -merge=1 with the seeds counted as covered first), so
 # that CTest's 30-second runs start where the long run got to. Prints each target's count.
+# At most FUZZ_KEEP inputs (default 60) are kept per target, the first by name (a content hash,
+# so an arbitrary but repeatable choice): replaying an accepted input under the oracles is slow
+# (fuzz_algorithm_input's 3,363 merged inputs took over five minutes, 300 of them three), and the 30 s runs must
+# stay short.
+#   scripts/fuzz-keep.sh [TARGET ...]    (default: every target)
 set -uo pipefail
 cd "$(dirname "$0")/.."
 build=build-sanitize
@@ -11,7 +16,9 @@ export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
 "$build/bin/fuzz_seeds" "$fuzz/seeds" lessons || exit 1
-for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study; do
+targets=("$@")
+(( ${#targets[@]} )) || targets=(fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study)
+for t in "${targets[@]}"; do
   seeds=$fuzz/seeds/$t
   [[ $t == fuzz_lesson ]] && seeds=lessons
   [[ $t == fuzz_scene ]] && seeds=tests/golden/ray-tracer
@@ -26,6 +33,7 @@ for t in fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_sce
     exit 1
   }
   rm -f "$merged"/seed-*
+  ls "$merged" | sort | tail -n +$(( ${FUZZ_KEEP:-60} + 1 )) | (cd "$merged" && xargs -r rm -f)
   find "tests/fuzz/corpus/$t" -type f ! -name .gitkeep -delete
   cp "$merged"/* "tests/fuzz/corpus/$t/" 2>/dev/null
   rm -rf "$merged"
