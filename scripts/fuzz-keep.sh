@@ -10,19 +10,12 @@
 #   scripts/fuzz-keep.sh [TARGET ...]    (default: every target)
 set -uo pipefail
 cd "$(dirname "$0")/.."
-build=build-sanitize
-fuzz=$build/fuzz
-export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1
-export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
+source scripts/fuzz-common.sh
 "$build/bin/fuzz_seeds" "$fuzz/seeds" lessons || exit 1
 targets=("$@")
-(( ${#targets[@]} )) || targets=(fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study)
+(( ${#targets[@]} )) || targets=("${fuzz_targets[@]}")
 for t in "${targets[@]}"; do
-  seeds=$fuzz/seeds/$t
-  [[ $t == fuzz_lesson ]] && seeds=lessons
-  [[ $t == fuzz_scene ]] && seeds=tests/golden/ray-tracer
-  [[ $t == fuzz_obj ]] && seeds=tests/data
+  seeds=$(fuzz_seeds_of "$t")
   merged=$(mktemp -d)
   # The seeds go in first, so that their coverage counts as had; they are taken out after.
   for f in "$seeds"/*; do [[ -f $f ]] && cp "$f" "$merged/seed-$(basename "$f")"; done

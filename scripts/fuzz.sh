@@ -7,22 +7,16 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
-build=build-sanitize
-fuzz=$build/fuzz
-export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1
-export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
+source scripts/fuzz-common.sh
 "$build/bin/fuzz_seeds" "$fuzz/seeds" lessons || exit 1
 mkdir -p "$fuzz/artifacts" "$fuzz/logs"
 # The targets run FUZZ_JOBS at a time (default: one per core), each for its full SECONDS of wall
 # time; their summaries print in the fixed order below once all have finished.
 jobs=${FUZZ_JOBS:-$(nproc)}
-targets=(fuzz_algorithm_input fuzz_lesson fuzz_checkpoint fuzz_timeline fuzz_scene fuzz_obj fuzz_study)
+targets=("${fuzz_targets[@]}")
 run_target() {
-  local t=$1 seeds=$fuzz/seeds/$1
-  [[ $t == fuzz_lesson ]] && seeds=lessons
-  [[ $t == fuzz_scene ]] && seeds=tests/golden/ray-tracer
-  [[ $t == fuzz_obj ]] && seeds=tests/data
+  local t=$1 seeds
+  seeds=$(fuzz_seeds_of "$t")
   mkdir -p "$fuzz/corpus/$t"
   local log=$fuzz/logs/$t.log
   "$build/bin/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
