@@ -46,11 +46,15 @@ constexpr double kMaxCoordinate = 1e100;
 // One definition of each formula, used by advance() and clip() alike, so the two agree bit
 // for bit.
 
-double cross(dvec2 a, dvec2 b) { return a.x * b.y - a.y * b.x; }
+double cross(dvec2 a, dvec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 
 // side(X) = orient · (B − A) × (X − A): twice the signed area of A, B, X, positive on the
 // inner side of A→B. Multiplying by ±1 is exact, so both orientations round alike.
-double side(double orient, dvec2 A, dvec2 B, dvec2 X) { return orient * cross(B - A, X - A); }
+double side(double orient, dvec2 A, dvec2 B, dvec2 X) {
+    return orient * cross(B - A, X - A);
+}
 
 // Where S→P crosses line AB, given side values of opposite kinds (one ≥ 0, the other < 0, so
 // the denominator is not zero): the side value is linear in t and vanishes at
@@ -59,8 +63,10 @@ dvec2 intersection(dvec2 A, dvec2 B, dvec2 S, dvec2 P, double side_S, double sid
     t = side_S / (side_S - side_P);
     dvec2 I = S + t * (P - S);
     // An axis-parallel edge fixes one coordinate: set it exactly, so I lies on the line.
-    if (A.x == B.x) I.x = A.x;
-    else if (A.y == B.y) I.y = A.y;
+    if (A.x == B.x)
+        I.x = A.x;
+    else if (A.y == B.y)
+        I.y = A.y;
     return I;
 }
 
@@ -81,7 +87,9 @@ std::size_t list_capacity(const SutherlandHodgman::Input& in) {
 // The polygon edge S→P tested last (while phase is Clip or EdgeDone): P = input[j − 1] and S
 // the vertex before it, cyclically. side(S) is recomputed where it is needed: the same
 // formula on the same numbers gives the same double the step used.
-dvec2 edge_P(const SutherlandHodgman::State& s) { return s.input[s.j - 1]; }
+dvec2 edge_P(const SutherlandHodgman::State& s) {
+    return s.input[s.j - 1];
+}
 dvec2 edge_S(const SutherlandHodgman::State& s) {
     return s.input[s.j >= 2 ? s.j - 2 : s.input.size() - 1];
 }
@@ -102,7 +110,8 @@ void check_points(const std::vector<dvec2>& points, const std::string& name) {
                 throw InputError(field, "must be at most 1e100 in size (got " + num(v) + ")");
             // Below that, edge lengths and areas underflow to zero.
             if (v != 0 && std::fabs(v) < 1e-100)
-                throw InputError(field, "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
+                throw InputError(field,
+                                 "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
         }
     }
 }
@@ -140,11 +149,16 @@ std::string where(const char* name, dvec2 p, double side_value) {
 
 const char* case_name(SutherlandHodgman::Case c) {
     switch (c) {
-        case SutherlandHodgman::Case::InIn: return "1 (in → in)";
-        case SutherlandHodgman::Case::InOut: return "2 (going out)";
-        case SutherlandHodgman::Case::OutOut: return "3 (out → out)";
-        case SutherlandHodgman::Case::OutIn: return "4 (going in)";
-        default: return "";
+        case SutherlandHodgman::Case::InIn:
+            return "1 (in → in)";
+        case SutherlandHodgman::Case::InOut:
+            return "2 (going out)";
+        case SutherlandHodgman::Case::OutOut:
+            return "3 (out → out)";
+        case SutherlandHodgman::Case::OutIn:
+            return "4 (going in)";
+        default:
+            return "";
     }
 }
 
@@ -207,27 +221,30 @@ const Spec& SutherlandHodgman::spec() {
             {"in-out", "case 2: S inside, P outside (going out), output the intersection I"},
             {"out-out", "case 3: S and P outside, output nothing"},
             {"out-in", "case 4: S outside, P inside (going in), output I, then P"},
-            {"edge-done", "every polygon edge was clipped against this window edge: the output "
-                          "list becomes the next input list"},
+            {"edge-done",
+             "every polygon edge was clipped against this window edge: the output "
+             "list becomes the next input list"},
             {"empty", "the output list came out empty: the polygon lies outside the window"},
             {"done", "all window edges done: the list is the clipped polygon"},
         },
         {},  // no sliders
         {
-            .predict = {
-                {"in-in", {}},
-                {"in-out", {"t", "I"}},
-                {"out-in", {"t", "I"}},
-                {"out-out", {}},
-            },
-            .mistakes = {
-                {"in-in", "side_P", "negate", "took the edge's inside on the wrong side"},
-                {"in-out", "I", "copy:P", "going out, emitted P instead of the crossing point"},
-                {"out-in", "", "event:in-out",
-                 "coming in, emitted only the crossing point and lost P"},
-                {"in-out", "", "event:out-out",
-                 "missed the crossing and emitted nothing on the way out"},
-            },
+            .predict =
+                {
+                    {"in-in", {}},
+                    {"in-out", {"t", "I"}},
+                    {"out-in", {"t", "I"}},
+                    {"out-out", {}},
+                },
+            .mistakes =
+                {
+                    {"in-in", "side_P", "negate", "took the edge's inside on the wrong side"},
+                    {"in-out", "I", "copy:P", "going out, emitted P instead of the crossing point"},
+                    {"out-in", "", "event:in-out",
+                     "coming in, emitted only the crossing point and lost P"},
+                    {"in-out", "", "event:out-out",
+                     "missed the crossing and emitted nothing on the way out"},
+                },
         },
     };
     return spec;
@@ -264,17 +281,16 @@ void SutherlandHodgman::validate(const Input& in) {
     for (std::size_t i = 0; i < m; ++i) {
         const std::size_t prev = (i + m - 1) % m, next = (i + 1) % m;
         if (turn[i] == 0 && along[i] > 0)
-            throw InputError("window", "vertices " + std::to_string(prev) + ", " +
-                                           std::to_string(i) + " and " + std::to_string(next) +
-                                           " are collinear (a straight angle at " +
-                                           vertex_text(w, i) + "); remove vertex " +
-                                           std::to_string(i));
+            throw InputError(
+                "window", "vertices " + std::to_string(prev) + ", " + std::to_string(i) + " and " +
+                              std::to_string(next) + " are collinear (a straight angle at " +
+                              vertex_text(w, i) + "); remove vertex " + std::to_string(i));
         if (turn[i] == 0)
             throw InputError("window",
                              "must be convex (doubles back at " + vertex_text(w, i) + ")");
         if ((turn[i] > 0) != (area > 0))
-            throw InputError("window", "must be convex (turns the other way at " +
-                                           vertex_text(w, i) + ")");
+            throw InputError("window",
+                             "must be convex (turns the other way at " + vertex_text(w, i) + ")");
     }
     // All turns go one way; a simple convex polygon turns through 360° in total, a star-shaped
     // self-crossing one (a pentagram) through 720° or more.
@@ -337,9 +353,12 @@ void SutherlandHodgman::advance(State& s) {
             s.after_edge.push_back(s.output);
             std::swap(s.input, s.output);
             s.output.clear();
-            if (s.input.empty()) s.phase = Phase::Done;  // nothing inside: stop
-            else if (s.k + 1 == static_cast<int>(s.in->window.size())) s.phase = Phase::Finish;
-            else s.phase = Phase::NextEdge;
+            if (s.input.empty())
+                s.phase = Phase::Done;  // nothing inside: stop
+            else if (s.k + 1 == static_cast<int>(s.in->window.size()))
+                s.phase = Phase::Finish;
+            else
+                s.phase = Phase::NextEdge;
             return;
         case Phase::Finish:  // The last list is the clipped polygon
             s.phase = Phase::Done;
@@ -351,37 +370,29 @@ void SutherlandHodgman::advance(State& s) {
 
 // One polygon edge S→P = input[j − 1]→input[j] (cyclically) against window edge A→B.
 void SutherlandHodgman::clip_polygon_edge(State& s) {
-    // S, P, side(S) and I are not stored (see edge_S, intersection_I): the fewer stores per
-    // step, the closer run_to_end comes to the plain loop. Worked in locals and stored once
-    // at the end, because the output list's stores could alias the state's numbers and force
-    // reloads. P is read in place: copied into a local, GCC loaded it as one 16-byte vector
-    // and split it into x and y through the stack, a store-and-reload on the way to the case
-    // test (the step's hard-to-predict branch); clip() reads its P the same way.
+    // Only side(P) is stored (S, side(S), the case, t and I are found again when asked for:
+    // which_case, crossing_t, intersection_I): the fewer stores per step, the closer run_to_end
+    // comes to the plain loop. Worked in locals and stored once at the end, because the output
+    // list's stores could alias the state's numbers and force reloads. P is read in place: copied
+    // into a local, GCC loaded it as one 16-byte vector and split it into x and y through the
+    // stack, a store-and-reload on the way to the case test (the step's hard-to-predict branch);
+    // clip() reads its P the same way.
     const int j = s.j, n = static_cast<int>(s.input.size());
     const dvec2 A = s.A, B = s.B;
     const dvec2& P = s.input[j];
     const double side_S = s.side_P, side_P = side(s.orient, A, B, P);
     if (side_S >= 0 && side_P >= 0) {  // case 1: in → in
-        s.which = Case::InIn;
         s.output.push_back(P);
     } else if (side_S >= 0) {  // case 2: going out
-        s.which = Case::InOut;
         const dvec2 S = s.input[j == 0 ? n - 1 : j - 1];
         double t;
-        const dvec2 I = intersection(A, B, S, P, side_S, side_P, t);
-        s.output.push_back(I);
-        s.t = t;
-    } else if (side_P < 0) {  // case 3: out → out
-        s.which = Case::OutOut;
-    } else {  // case 4: going in
-        s.which = Case::OutIn;
+        s.output.push_back(intersection(A, B, S, P, side_S, side_P, t));
+    } else if (side_P >= 0) {  // case 4: going in
         const dvec2 S = s.input[j == 0 ? n - 1 : j - 1];
         double t;
-        const dvec2 I = intersection(A, B, S, P, side_S, side_P, t);
-        s.output.push_back(I);
+        s.output.push_back(intersection(A, B, S, P, side_S, side_P, t));
         s.output.push_back(P);
-        s.t = t;
-    }
+    }  // case 3, out → out: nothing
     s.side_P = side_P;
     s.j = j + 1;
     if (j + 1 == n) s.phase = Phase::EdgeDone;
@@ -394,7 +405,9 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
     const bool clipped = s.phase == Phase::Clip || s.phase == Phase::EdgeDone;
     const dvec2 S = clipped ? edge_S(s) : dvec2(0), P = clipped ? edge_P(s) : dvec2(0);
     const double side_S = clipped ? side(s.orient, s.A, s.B, S) : 0;
-    const bool crossed = clipped && (s.which == Case::InOut || s.which == Case::OutIn);
+    const Case which = which_case(s);
+    const double t = crossing_t(s);
+    const bool crossed = which == Case::InOut || which == Case::OutIn;
     const dvec2 I = crossed ? intersection_I(s) : dvec2(0);
     if (s.k >= 0) {
         info.vars.push_back({"edge", static_cast<long long>(s.k)});
@@ -406,9 +419,9 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
         info.vars.push_back({"P", vec(P)});
         info.vars.push_back({"side_S", side_S});
         info.vars.push_back({"side_P", s.side_P});
-        info.vars.push_back({"case", std::string(case_name(s.which))});
+        info.vars.push_back({"case", std::string(case_name(which))});
         if (crossed) {
-            info.vars.push_back({"t", s.t});
+            info.vars.push_back({"t", t});
             info.vars.push_back({"I", vec(I)});
         }
     }
@@ -420,36 +433,39 @@ void SutherlandHodgman::narrate(const State& s, StepInfo& info) {
         info.line = kLineInput;
         const bool ccw = s.orient > 0;
         info.math = "\\text{area} = \\tfrac{1}{2} \\sum_i (W_i - W_0) \\times (W_{i+1} - W_0) = " +
-                    tex(s.window_area) + (ccw ? " > 0 \\Rightarrow \\text{orient} = +1"
-                                              : " < 0 \\Rightarrow \\text{orient} = -1");
+                    tex(s.window_area) +
+                    (ccw ? " > 0 \\Rightarrow \\text{orient} = +1"
+                         : " < 0 \\Rightarrow \\text{orient} = -1");
         info.narration = "The window's signed area is " + num(s.window_area) +
                          (ccw ? " > 0, so it runs counter-clockwise and inside means left of"
                               : " < 0, so it runs clockwise and inside means right of") +
                          " each edge (on the edge counts as inside); the input list is the "
-                         "polygon's " + vertices(s.input.size()) + ".";
+                         "polygon's " +
+                         vertices(s.input.size()) + ".";
         return;
     }
     if (clipped) {
         std::string head;
         if (s.j == 1) head = edge_text(s) + "; S starts as the last input vertex. ";
         const std::string sp = where("S", S, side_S) + " and " + where("P", P, s.side_P) +
-                               ": case " + case_name(s.which);
+                               ": case " + case_name(which);
         // "t = 8/(8 − (-8)) = 0.5, I = (4, 2)"
         const std::string minus_P = s.side_P < 0 ? "(" + num(s.side_P) + ")" : num(s.side_P);
-        const std::string cut = "SP crosses AB at t = " + num(side_S) + "/(" + num(side_S) +
-                                " − " + minus_P + ") = " + num(s.t) + ", I = " + num(I);
+        const std::string cut = "SP crosses AB at t = " + num(side_S) + "/(" + num(side_S) + " − " +
+                                minus_P + ") = " + num(t) + ", I = " + num(I);
         info.math = side_tex("S", s.orient, s.A, s.B, S, side_S) + ",\\quad " +
                     side_tex("P", s.orient, s.A, s.B, P, s.side_P);
         if (crossed) {
             const std::string minus_P_tex =
                 s.side_P < 0 ? "(" + tex(s.side_P) + ")" : tex(s.side_P);
-            info.math += ",\\quad t = \\frac{\\mathrm{side}(S)}{\\mathrm{side}(S) - "
-                         "\\mathrm{side}(P)} = \\frac{" + tex(side_S) + "}{" + tex(side_S) +
-                         " - " + minus_P_tex + "} = " + tex(s.t) +
-                         ",\\quad I = S + t\\,(P - S) = " + tex(S) + " + " + tex(s.t) + "\\," +
-                         tex(P - S) + " = " + tex(I);
+            info.math +=
+                ",\\quad t = \\frac{\\mathrm{side}(S)}{\\mathrm{side}(S) - "
+                "\\mathrm{side}(P)} = \\frac{" +
+                tex(side_S) + "}{" + tex(side_S) + " - " + minus_P_tex + "} = " + tex(t) +
+                ",\\quad I = S + t\\,(P - S) = " + tex(S) + " + " + tex(t) + "\\," + tex(P - S) +
+                " = " + tex(I);
         }
-        switch (s.which) {
+        switch (which) {
             case Case::InIn:
                 info.event = "in-in";
                 info.line = kLineInIn;
@@ -519,8 +535,25 @@ SutherlandHodgman::Result SutherlandHodgman::result(State&& s) {
     return {std::move(s.input), std::move(s.after_edge)};
 }
 
+// The case tests of clip_polygon_edge again, on side(S) recomputed (the same double: see
+// edge_S) and the stored side(P).
+SutherlandHodgman::Case SutherlandHodgman::which_case(const State& s) {
+    if (s.phase != Phase::Clip && s.phase != Phase::EdgeDone) return Case::None;
+    const double side_S = side(s.orient, s.A, s.B, edge_S(s)), side_P = s.side_P;
+    if (side_S >= 0) return side_P >= 0 ? Case::InIn : Case::InOut;
+    return side_P >= 0 ? Case::OutIn : Case::OutOut;
+}
+
+double SutherlandHodgman::crossing_t(const State& s) {
+    const Case c = which_case(s);
+    if (c != Case::InOut && c != Case::OutIn) return 0;
+    double t;
+    intersection(s.A, s.B, edge_S(s), edge_P(s), side(s.orient, s.A, s.B, edge_S(s)), s.side_P, t);
+    return t;
+}
+
 dvec2 SutherlandHodgman::intersection_I(const State& s) {
-    return s.output[s.output.size() - (s.which == Case::OutIn ? 2 : 1)];
+    return s.output[s.output.size() - (which_case(s) == Case::OutIn ? 2 : 1)];
 }
 
 // ---- [clip] ----------------------------------------------------------------------------------
@@ -574,7 +607,8 @@ void SutherlandHodgman::draw(const State& s, Scene& scene) {
     if (s.k >= 0 && !finished) {
         const dvec2 d = s.B - s.A;
         const dvec2 inward = s.orient * dvec2(-d.y, d.x) / std::sqrt(d.x * d.x + d.y * d.y);
-        scene.half_planes.push_back({s.A, inward,
+        scene.half_planes.push_back({s.A,
+                                     inward,
                                      "edge " + std::to_string(s.k) + ": W" + std::to_string(s.k) +
                                          "→W" + std::to_string((s.k + 1) % w.size()),
                                      {Role::Active, 2.5f}});
@@ -585,7 +619,9 @@ void SutherlandHodgman::draw(const State& s, Scene& scene) {
     if (s.phase != Phase::Setup) {
         const bool lost = finished && s.input.empty();
         scene.polygons.push_back(
-            {poly, {lost ? Role::Discarded : Role::Construction, lost ? 2.0f : 1.0f, true}, true,
+            {poly,
+             {lost ? Role::Discarded : Role::Construction, lost ? 2.0f : 1.0f, true},
+             true,
              false});
     }
     if (finished) {
@@ -603,10 +639,12 @@ void SutherlandHodgman::draw(const State& s, Scene& scene) {
         scene.segments.push_back({S, P, "", {Role::Active, 3.0f}, true});
         scene.labels.push_back({S, "S", {Role::Active}});
         scene.labels.push_back({P, "P", {Role::Active}});
-        if (s.which == Case::InOut || s.which == Case::OutIn)
-            scene.points.push_back(
-                {intersection_I(s), "I", {s.which == Case::OutIn ? Role::Entering : Role::Leaving},
-                 6.0f});
+        const Case which = which_case(s);
+        if (which == Case::InOut || which == Case::OutIn)
+            scene.points.push_back({intersection_I(s),
+                                    "I",
+                                    {which == Case::OutIn ? Role::Entering : Role::Leaving},
+                                    6.0f});
     }
     if (!finished)
         for (std::size_t i = 0; i < s.output.size(); ++i)

@@ -295,16 +295,15 @@ Points draw_polygon(Kind kind, const Points& w, Rng& rng, bool want_concave) {
     switch (kind) {
         case Kind::Crossing:
             if (want_concave && rng.chance(0.5)) return crown(w, rng);
-        {
-            // One draw per statement: the order of a call's arguments is unspecified (gcc and
-            // clang differ), and the same seed must give the same problem from either.
-            const long long r = rng.integer(3, 5);
-            const int n = static_cast<int>(rng.integer(3, 6));
-            const dvec2 c = point(rng, b.x0, b.x1, b.y0, b.y1);
-            return star(rng, c, n, r);
-        }
-        case Kind::Inside:
-        {
+            {
+                // One draw per statement: the order of a call's arguments is unspecified (gcc and
+                // clang differ), and the same seed must give the same problem from either.
+                const long long r = rng.integer(3, 5);
+                const int n = static_cast<int>(rng.integer(3, 6));
+                const dvec2 c = point(rng, b.x0, b.x1, b.y0, b.y1);
+                return star(rng, c, n, r);
+            }
+        case Kind::Inside: {
             const int n = static_cast<int>(rng.integer(3, 5));
             return star(rng, point(rng, b.x0 + 1, b.x1 - 1, b.y0 + 1, b.y1 - 1), n, 2);
         }
@@ -402,12 +401,13 @@ RunFacts run(const SutherlandHodgman::Input& in) {
             f.any_zero = true;
         else if (std::fabs(s.side_P) < 1e-6)
             f.nice = false;
-        if (s.which == SutherlandHodgman::Case::InOut ||
-            s.which == SutherlandHodgman::Case::OutIn) {
+        const SutherlandHodgman::Case which = SutherlandHodgman::which_case(s);
+        if (which == SutherlandHodgman::Case::InOut || which == SutherlandHodgman::Case::OutIn) {
             ++f.crossings;
             const dvec2 I = SutherlandHodgman::intersection_I(s);
-            f.nice = f.nice && nice(I.x) && nice(I.y) && (nice(s.t) || read_off(s));
-            f.every_t_nice = f.every_t_nice && nice(s.t);
+            const double t = SutherlandHodgman::crossing_t(s);
+            f.nice = f.nice && nice(I.x) && nice(I.y) && (nice(t) || read_off(s));
+            f.every_t_nice = f.every_t_nice && nice(t);
         }
         f.longest = std::max(f.longest, s.output.size());
     }

@@ -1,20 +1,18 @@
 // Sutherland-Hodgman: exam cases worked by hand (with the degenerate ones), refusals, and
 // 10,000 random window/polygon pairs against Clipper's exact integer intersection; plus the
 // determinism of the trace and of stepping back, and the picture.
-#include <catch2/catch.hpp>
-
-#include "support/replay.hpp"
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "polygon_reference.hpp"
 #include "clipping/sutherland_hodgman.hpp"
 #include "core/rng.hpp"
 #include "core/timeline.hpp"
 #include "io/registry.hpp"
+#include "polygon_reference.hpp"
+#include "support/replay.hpp"
 #include "support/traced.hpp"
 
 using cg::SutherlandHodgman;
@@ -51,8 +49,10 @@ std::vector<std::string> expected_events(const std::vector<std::vector<std::stri
         e.insert(e.end(), pass.begin(), pass.end());
         e.push_back("edge-done");
     }
-    if (std::string(last) == "empty") e.back() = "empty";
-    else e.push_back(last);
+    if (std::string(last) == "empty")
+        e.back() = "empty";
+    else
+        e.push_back(last);
     return e;
 }
 
@@ -99,7 +99,9 @@ TEST_CASE("sutherland-hodgman: exam cases worked by hand", "[clipping][sutherlan
         //    (2, 1)→(4, 2): in-in, (4, 2). (4, 2)→(4, 4.5): 8, −2, going out, t = 0.8,
         //    I = (4, 4). (4, 4.5)→(2, 6): out-out. List (2, 4), (2, 1), (4, 2), (4, 4).
         //  edge 3 (x ≥ 0): all inside.
-        {"triangle poking out right and top", kSquare, {{2, 1}, {6, 3}, {2, 6}},
+        {"triangle poking out right and top",
+         kSquare,
+         {{2, 1}, {6, 3}, {2, 6}},
          {{2, 4}, {2, 1}, {4, 2}, {4, 4}},
          expected_events({repeat("in-in", 3),
                           {"in-in", "in-out", "out-in"},
@@ -114,7 +116,9 @@ TEST_CASE("sutherland-hodgman: exam cases worked by hand", "[clipping][sutherlan
         //    (2, 4). (2, 4)→(2, 1): in-in. (2, 1)→(6, 3): going out, I = (4, 2).
         //    (6, 3)→(14/3, 4): out-out. List (4, 4), (2, 4), (2, 1), (4, 2).
         //  edge 3 (y ≥ 0): all inside. The same polygon as before, started elsewhere.
-        {"clockwise window", {{0, 0}, {0, 4}, {4, 4}, {4, 0}}, {{2, 1}, {6, 3}, {2, 6}},
+        {"clockwise window",
+         {{0, 0}, {0, 4}, {4, 4}, {4, 0}},
+         {{2, 1}, {6, 3}, {2, 6}},
          {{4, 4}, {2, 4}, {2, 1}, {4, 2}},
          expected_events({repeat("in-in", 3),
                           {"out-in", "in-in", "in-out"},
@@ -127,9 +131,12 @@ TEST_CASE("sutherland-hodgman: exam cases worked by hand", "[clipping][sutherlan
         //    t = 0.5, I = (2.5, 4), then (2, 2). (2, 2)→(1, 6): 8, −8, going out, t = 0.5,
         //    I = (1.5, 4).
         //  edge 3: all inside. Area 2·3 − 1·2/2 = 5.
-        {"concave pentagon, one piece", kSquare, {{1, 1}, {3, 1}, {3, 6}, {2, 2}, {1, 6}},
+        {"concave pentagon, one piece",
+         kSquare,
+         {{1, 1}, {3, 1}, {3, 6}, {2, 2}, {1, 6}},
          {{1, 4}, {1, 1}, {3, 1}, {3, 4}, {2.5, 4}, {2, 2}, {1.5, 4}},
-         expected_events({repeat("in-in", 5), repeat("in-in", 5),
+         expected_events({repeat("in-in", 5),
+                          repeat("in-in", 5),
                           {"out-in", "in-in", "in-out", "out-in", "in-out"},
                           repeat("in-in", 7)})},
         // An arch ∩ whose bar lies above the window [0, 6] × [0, 4]: two legs survive, joined
@@ -140,19 +147,27 @@ TEST_CASE("sutherland-hodgman: exam cases worked by hand", "[clipping][sutherlan
         //    →(2, 5) going out: (2, 4). →(4, 5) out-out. →(4, 1) going in: (4, 4), (4, 1).
         //    →(5, 1) in-in. →(5, 6) going out: (5, 4). →(1, 6) out-out.
         //  edge 3: all inside.
-        {"concave arch cut in two, bridged", {{0, 0}, {6, 0}, {6, 4}, {0, 4}},
+        {"concave arch cut in two, bridged",
+         {{0, 0}, {6, 0}, {6, 4}, {0, 4}},
          {{1, 1}, {2, 1}, {2, 5}, {4, 5}, {4, 1}, {5, 1}, {5, 6}, {1, 6}},
          {{1, 4}, {1, 1}, {2, 1}, {2, 4}, {4, 4}, {4, 1}, {5, 1}, {5, 4}},
-         expected_events({repeat("in-in", 8), repeat("in-in", 8),
-                          {"out-in", "in-in", "in-out", "out-out", "out-in", "in-in", "in-out",
-                           "out-out"},
-                          repeat("in-in", 8)})},
+         expected_events(
+             {repeat("in-in", 8),
+              repeat("in-in", 8),
+              {"out-in", "in-in", "in-out", "out-out", "out-in", "in-in", "in-out", "out-out"},
+              repeat("in-in", 8)})},
         // Entirely inside: every pass keeps the list as it is.
-        {"polygon entirely inside", kSquare, {{1, 1}, {3, 1}, {2, 3}}, {{1, 1}, {3, 1}, {2, 3}},
-         expected_events({repeat("in-in", 3), repeat("in-in", 3), repeat("in-in", 3),
-                          repeat("in-in", 3)})},
+        {"polygon entirely inside",
+         kSquare,
+         {{1, 1}, {3, 1}, {2, 3}},
+         {{1, 1}, {3, 1}, {2, 3}},
+         expected_events(
+             {repeat("in-in", 3), repeat("in-in", 3), repeat("in-in", 3), repeat("in-in", 3)})},
         // Entirely outside (beyond the right edge): edge 0 keeps everything, edge 1 nothing.
-        {"polygon entirely outside", kSquare, {{5, 5}, {6, 5}, {6, 6}}, {},
+        {"polygon entirely outside",
+         kSquare,
+         {{5, 5}, {6, 5}, {6, 6}},
+         {},
          expected_events({repeat("in-in", 3), repeat("out-out", 3)}, "empty")},
         // The window inside the polygon: the result is the window.
         //  edge 0 (y ≥ 0): (−1, 5)→(−1, −1) going out: (−1, 0). →(5, −1) out-out.
@@ -163,7 +178,9 @@ TEST_CASE("sutherland-hodgman: exam cases worked by hand", "[clipping][sutherlan
         //    →(4, 5) going out: (4, 4). →(−1, 5) out-out.
         //  edge 3 (x ≥ 0): →(−1, 4) going out: (0, 4). →(−1, 0) out-out.
         //    →(4, 0) going in: (0, 0), (4, 0). →(4, 4) in-in.
-        {"window inside the polygon", kSquare, {{-1, -1}, {5, -1}, {5, 5}, {-1, 5}},
+        {"window inside the polygon",
+         kSquare,
+         {{-1, -1}, {5, -1}, {5, 5}, {-1, 5}},
          {{0, 4}, {0, 0}, {4, 0}, {4, 4}},
          expected_events({{"in-out", "out-out", "out-in", "in-in"},
                           {"in-in", "in-out", "out-out", "out-in"},
@@ -172,37 +189,50 @@ TEST_CASE("sutherland-hodgman: exam cases worked by hand", "[clipping][sutherlan
         // Sharing the bottom edge's line: points on it (side 0) count as inside.
         //  edge 1 (x ≤ 4): (2, 2)→(2, 0) in-in. →(6, 0) going out: (4, 0). →(6, 2) out-out.
         //    →(2, 2) going in: (4, 2), (2, 2).
-        {"shared edge", kSquare, {{2, 0}, {6, 0}, {6, 2}, {2, 2}},
+        {"shared edge",
+         kSquare,
+         {{2, 0}, {6, 0}, {6, 2}, {2, 2}},
          {{2, 0}, {4, 0}, {4, 2}, {2, 2}},
          expected_events({in4, {"in-in", "in-out", "out-out", "out-in"}, in4, in4})},
         {"polygon equal to the window", kSquare, kSquare, kSquare,
          expected_events({in4, in4, in4, in4})},
         // A vertex on the right edge from inside: side 0 is inside, nothing changes.
-        {"vertex on a window edge, from inside", kSquare, {{1, 1}, {4, 2}, {1, 3}},
+        {"vertex on a window edge, from inside",
+         kSquare,
          {{1, 1}, {4, 2}, {1, 3}},
-         expected_events({repeat("in-in", 3), repeat("in-in", 3), repeat("in-in", 3),
-                          repeat("in-in", 3)})},
+         {{1, 1}, {4, 2}, {1, 3}},
+         expected_events(
+             {repeat("in-in", 3), repeat("in-in", 3), repeat("in-in", 3), repeat("in-in", 3)})},
         // Touching the right edge from outside at (4, 2): the classic algorithm keeps the
         // touching point, three times, and a zero-area list, not an empty one.
         //  edge 1: (6, 3)→(4, 2): −8, 0, going in, t = 1, I = (4, 2), then P = (4, 2).
         //    (4, 2)→(6, 1): 0, −8, going out, t = 0, I = (4, 2). (6, 1)→(6, 3) out-out.
-        {"touching a window edge from outside", kSquare, {{4, 2}, {6, 1}, {6, 3}},
+        {"touching a window edge from outside",
+         kSquare,
+         {{4, 2}, {6, 1}, {6, 3}},
          {{4, 2}, {4, 2}, {4, 2}},
-         expected_events({repeat("in-in", 3), {"out-in", "in-out", "out-out"},
-                          repeat("in-in", 3), repeat("in-in", 3)})},
+         expected_events({repeat("in-in", 3),
+                          {"out-in", "in-out", "out-out"},
+                          repeat("in-in", 3),
+                          repeat("in-in", 3)})},
         // Collinear polygon vertices along y = 1 through the right edge at (4, 1):
         //  edge 1: (2, 3)→(2, 1) in-in. →(4, 1) in-in (on the edge). →(6, 1) going out,
         //    t = 0, I = (4, 1) again. →(6, 3) out-out. →(2, 3) going in: (4, 3), (2, 3).
-        {"collinear vertices", kSquare, {{2, 1}, {4, 1}, {6, 1}, {6, 3}, {2, 3}},
+        {"collinear vertices",
+         kSquare,
+         {{2, 1}, {4, 1}, {6, 1}, {6, 3}, {2, 3}},
          {{2, 1}, {4, 1}, {4, 1}, {4, 3}, {2, 3}},
          expected_events({repeat("in-in", 5),
                           {"in-in", "in-in", "in-out", "out-out", "out-in"},
-                          repeat("in-in", 5), repeat("in-in", 5)})},
+                          repeat("in-in", 5),
+                          repeat("in-in", 5)})},
         // A triangle window x ≥ 0, y ≥ 0, x + y ≤ 6; edge 1 (6, 0)→(0, 6) has
         // side = 6(6 − x − y). The square's corners (5, 1) and (1, 5) lie on it.
         //  edge 1: (1, 5)→(1, 1): 0, 24, in-in. →(5, 1): in-in (on). →(5, 5): 0, −24, going
         //    out, t = 0, I = (5, 1). →(1, 5): −24, 0, going in, t = 1, I = (1, 5), then (1, 5).
-        {"triangle window", {{0, 0}, {6, 0}, {0, 6}}, {{1, 1}, {5, 1}, {5, 5}, {1, 5}},
+        {"triangle window",
+         {{0, 0}, {6, 0}, {0, 6}},
+         {{1, 1}, {5, 1}, {5, 5}, {1, 5}},
          {{1, 1}, {5, 1}, {5, 1}, {1, 5}, {1, 5}},
          expected_events({in4, {"in-in", "in-in", "in-out", "out-in"}, repeat("in-in", 5)})},
     };
@@ -244,7 +274,8 @@ TEST_CASE("sutherland-hodgman: areas of the hand cases", "[clipping][sutherland-
     CHECK(area(kSquare, {{4, 2}, {6, 1}, {6, 3}}) == 0);
 }
 
-TEST_CASE("sutherland-hodgman: each step reports its line, numbers and variables", "[clipping][sutherland-hodgman]") {
+TEST_CASE("sutherland-hodgman: each step reports its line, numbers and variables",
+          "[clipping][sutherland-hodgman]") {
     Traced t = run_traced({kSquare, {{2, 1}, {6, 3}, {2, 6}}});
     REQUIRE(t.steps.size() == 1 + 4 + 4 + 5 + 5 + 1);
     CHECK(t.steps[0].line == 2);
@@ -443,9 +474,9 @@ TEST_CASE("sutherland-hodgman: bad JSON input names the field", "[clipping][suth
           R"({"polygon":[[2.0,4.0],[2.0,1.0],[4.0,2.0],[4.0,4.0]],"after_edge":[[[2.0,1.0],)"
           R"([6.0,3.0],[2.0,6.0]],[[2.0,1.0],[4.0,2.0],[4.0,4.5],[2.0,6.0]],[[2.0,4.0],[2.0,1.0],)"
           R"([4.0,2.0],[4.0,4.0]],[[2.0,4.0],[2.0,1.0],[4.0,2.0],[4.0,4.0]]]})");
-    CHECK(result_of(
-              R"({"window": [[0, 0], [4, 0], [4, 4]], "polygon": [[5, 0], [6, 0], [6, 1]]})") ==
-          R"({"polygon":[],"after_edge":[[[5.0,0.0],[6.0,0.0],[6.0,1.0]],[]]})");
+    CHECK(
+        result_of(R"({"window": [[0, 0], [4, 0], [4, 4]], "polygon": [[5, 0], [6, 0], [6, 1]]})") ==
+        R"({"polygon":[],"after_edge":[[[5.0,0.0],[6.0,0.0],[6.0,1.0]],[]]})");
     // Generated inputs are written with integral coordinates as integers, as a student would.
     CHECK(sh->exam_input(1).dump().find(".0") == std::string::npos);
 }
@@ -478,7 +509,9 @@ double boundary_distance(dvec2 p, const Points& polygon) {
     return best;
 }
 
-double snap(double x, double grid) { return std::round(x / grid) * grid; }
+double snap(double x, double grid) {
+    return std::round(x / grid) * grid;
+}
 
 // Andrew's monotone chain: counter-clockwise, without collinear points.
 Points convex_hull(Points pts) {
@@ -552,7 +585,8 @@ bool inside_window(dvec2 p, const Points& window) {
 
 }  // namespace
 
-TEST_CASE("sutherland-hodgman: 10,000 random polygons agree with Clipper", "[clipping][sutherland-hodgman]") {
+TEST_CASE("sutherland-hodgman: 10,000 random polygons agree with Clipper",
+          "[clipping][sutherland-hodgman]") {
     int nonempty = 0, empty = 0, concave = 0, bridged = 0, coarse_hits = 0;
     double worst_area = 0, worst_vertex = 0;
     for (int trial = 0; trial < 10000; ++trial) {
@@ -635,7 +669,60 @@ TEST_CASE("sutherland-hodgman: 10,000 random polygons agree with Clipper", "[cli
     CHECK(worst_vertex < 1e-11);
 }
 
-TEST_CASE("sutherland-hodgman: traces are deterministic and stepping back reproduces them", "[clipping][sutherland-hodgman]") {
+// The state keeps only side(P); the case, t and I of the edge just clipped are found again
+// when asked for. Here the test walks each pass beside the quiet run with its own S, P and side
+// values (the course's formula, in the same double arithmetic the step uses, so the numbers
+// must agree exactly), and checks what the accessors report against them.
+TEST_CASE("sutherland-hodgman: the case, t and I found again equal the step's",
+          "[clipping][sutherland-hodgman]") {
+    using Case = SutherlandHodgman::Case;
+    int steps = 0, crossings = 0;
+    for (int trial = 0; trial < 1000; ++trial) {
+        CAPTURE(trial);
+        cg::Rng rng(1000 + trial);
+        const double grid = trial % 2 ? 1.0 / 1024 : 0.25;
+        const Points window = random_convex(rng, grid), polygon = random_star(rng, grid);
+        auto s = SutherlandHodgman::start(SutherlandHodgman::Input{window, polygon});
+        while (!SutherlandHodgman::done(s)) {
+            SutherlandHodgman::step(s, nullptr);
+            if (s.phase != SutherlandHodgman::Phase::Clip &&
+                s.phase != SutherlandHodgman::Phase::EdgeDone) {
+                CHECK(SutherlandHodgman::which_case(s) == Case::None);
+                CHECK(SutherlandHodgman::crossing_t(s) == 0);
+                continue;
+            }
+            ++steps;
+            const int n = static_cast<int>(s.input.size());
+            const dvec2 P = s.input[s.j - 1], S = s.input[s.j >= 2 ? s.j - 2 : n - 1];
+            const auto side = [&](dvec2 X) {
+                return s.orient *
+                       ((s.B.x - s.A.x) * (X.y - s.A.y) - (s.B.y - s.A.y) * (X.x - s.A.x));
+            };
+            const double side_S = side(S), side_P = side(P);
+            REQUIRE(side_P == s.side_P);
+            const Case expected = side_S >= 0 ? (side_P >= 0 ? Case::InIn : Case::InOut)
+                                              : (side_P >= 0 ? Case::OutIn : Case::OutOut);
+            REQUIRE(SutherlandHodgman::which_case(s) == expected);
+            if (expected != Case::InOut && expected != Case::OutIn) {
+                CHECK(SutherlandHodgman::crossing_t(s) == 0);
+                continue;
+            }
+            ++crossings;
+            const double t = side_S / (side_S - side_P);
+            CHECK(SutherlandHodgman::crossing_t(s) == t);
+            const dvec2 I = SutherlandHodgman::intersection_I(s);
+            // I = S + t (P − S), with the coordinate an axis-parallel edge fixes set exactly.
+            const dvec2 J = S + t * (P - S);
+            CHECK((s.A.x == s.B.x ? s.A.x : J.x) == I.x);
+            CHECK((s.A.x != s.B.x && s.A.y == s.B.y ? s.A.y : J.y) == I.y);
+        }
+    }
+    CHECK(steps > 30000);
+    CHECK(crossings > 5000);
+}
+
+TEST_CASE("sutherland-hodgman: traces are deterministic and stepping back reproduces them",
+          "[clipping][sutherland-hodgman]") {
     const cg::Registry registry = cg::builtin_registry();
     const cg::Algorithm* sh = registry.find("sutherland-hodgman");
     REQUIRE(sh);
@@ -664,7 +751,8 @@ TEST_CASE("sutherland-hodgman: traces are deterministic and stepping back reprod
     CHECK(rest == SutherlandHodgman::clip(kSquare, {{-1, -1}, {5, -1}, {5, 5}, {-1, 5}}));
 }
 
-TEST_CASE("sutherland-hodgman: the picture shows the window, the lists and the edge under test", "[clipping][sutherland-hodgman]") {
+TEST_CASE("sutherland-hodgman: the picture shows the window, the lists and the edge under test",
+          "[clipping][sutherland-hodgman]") {
     using cg::Role;
     auto s = SutherlandHodgman::start({kSquare, {{2, 1}, {6, 3}, {2, 6}}});
     cg::Scene scene;

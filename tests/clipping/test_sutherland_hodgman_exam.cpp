@@ -174,17 +174,17 @@ TEST_CASE(
         auto s = SutherlandHodgman::start(in);
         while (!SutherlandHodgman::done(s)) {
             SutherlandHodgman::step(s, nullptr);
-            const bool crossing = (s.phase == SutherlandHodgman::Phase::Clip ||
-                                   s.phase == SutherlandHodgman::Phase::EdgeDone) &&
-                                  (s.which == SutherlandHodgman::Case::InOut ||
-                                   s.which == SutherlandHodgman::Case::OutIn);
+            const SutherlandHodgman::Case which = SutherlandHodgman::which_case(s);
+            const bool crossing =
+                which == SutherlandHodgman::Case::InOut || which == SutherlandHodgman::Case::OutIn;
             if (!crossing) continue;
             ++crossings;
             const dvec2 P = s.input[s.j - 1], S = s.input[s.j >= 2 ? s.j - 2 : s.input.size() - 1];
             const bool read_off = (s.A.x == s.B.x && S.y == P.y) || (s.A.y == s.B.y && S.x == P.x);
-            not_needed += !nice(s.t);
-            CAPTURE(s.t, read_off);
-            CHECK((nice(s.t) || read_off));
+            const double t = SutherlandHodgman::crossing_t(s);
+            not_needed += !nice(t);
+            CAPTURE(t, read_off);
+            CHECK((nice(t) || read_off));
         }
 
         // The kinds of problem, told from the geometry alone.
