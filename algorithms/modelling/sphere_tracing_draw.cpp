@@ -60,7 +60,7 @@ void outline(const Input& in, const Slice& sl, glm::dvec2 lo, glm::dvec2 hi, Sce
     for (int j = 0; j <= ny; ++j)
         for (int i = 0; i <= nx; ++i)
             at(i, j) = SphereTracing::distance(in, sl.to3(lo + h * glm::dvec2(i, j)));
-    const Style style{Role::Subject, 2.0f};
+    const Style style{Role::Neutral, 2.5f};
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
             // Corners counter-clockwise from the lower left, and the edge crossings between them.
@@ -119,7 +119,9 @@ void SphereTracing::draw(const State& s, Scene& scene) {
         lo = glm::min(lo, c - glm::dvec2(r));
         hi = glm::max(hi, c + glm::dvec2(r));
     }
-    const double reach = glm::length(hi - lo) * 1.2;
+    // (No shape cut by the plane: show the march itself, up to max_distance.)
+    double reach = glm::length(hi - lo) * 1.2;
+    if (reach == 0) reach = in.max_distance;
     const Result whole = compute(in);
     const double t_end = std::min({whole.t, in.max_distance, reach});
     lo = glm::min(lo, o2 + t_end * u2);
@@ -149,9 +151,10 @@ void SphereTracing::draw(const State& s, Scene& scene) {
                          : current ? Style{Role::Active, 2.0f}
                                    : Style{Role::Construction, 1.0f};
         if (std::abs(d) > 0) circle(p, std::abs(d), st, scene);
+        // Labelled where the next step is long enough to keep the labels apart (p0 is "o").
         if (!current)
             scene.points.push_back(
-                {p, n <= 8 ? "p" + std::to_string(j) : "", {Role::Neutral}, 3.0f});
+                {p, j > 0 && d > 0.06 * span ? "p" + std::to_string(j) : "", {Role::Neutral}, 3.0f});
     }
     if (n > 0) {
         const glm::dvec2 p = o2 + s.ts[n - 1] * u2;
