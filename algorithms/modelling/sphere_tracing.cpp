@@ -355,7 +355,7 @@ void narrate_verdict(const State& s, StepInfo& info) {
                      "; the last distance was " + num(s.d) +
                      ". Counted as a miss: a ray grazing a surface creeps along it with ever "
                      "smaller steps.";
-    info.math = "k = " + std::to_string(s.k) + " = \\text{max\\_steps}";
+    info.math = "k = " + std::to_string(s.k) + " = k_{\\max}";
 }
 
 }  // namespace

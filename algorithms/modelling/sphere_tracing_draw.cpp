@@ -153,18 +153,21 @@ void SphereTracing::draw(const State& s, Scene& scene) {
         if (std::abs(d) > 0) circle(p, std::abs(d), st, scene);
         // Labelled where the next step is long enough to keep the labels apart (p0 is "o").
         if (!current)
-            scene.points.push_back(
-                {p, j > 0 && d > 0.06 * span ? "p" + std::to_string(j) : "", {Role::Neutral}, 3.0f});
+            scene.points.push_back({p,
+                                    j > 0 && d > 0.06 * span ? "p" + std::to_string(j) : "",
+                                    {Role::Neutral},
+                                    3.0f});
     }
     if (n > 0) {
         const glm::dvec2 p = o2 + s.ts[n - 1] * u2;
         scene.segments.push_back({o2, p, "", {Role::Kept, 2.5f}});
         const double d = s.ds[n - 1];
-        scene.segments.push_back({p,
-                                  p + std::abs(d) * glm::dvec2(0, 1),
-                                  "d" + std::to_string(n - 1) + " = " + num(d, 4),
-                                  {Role::Active, 1.0f, true}});
-        scene.points.push_back({p, "p" + std::to_string(n - 1), {Role::Active}, 6.0f});
+        // The radius drawn, and the distance on the point's own label (a label on the radius
+        // drifts away from a small circle).
+        scene.segments.push_back(
+            {p, p + std::abs(d) * glm::dvec2(0, 1), "", {Role::Active, 1.0f, true}});
+        const std::string k = std::to_string(n - 1);
+        scene.points.push_back({p, "p" + k + ": d" + k + " = " + num(d, 4), {Role::Active}, 6.0f});
     }
     if (s.phase == Phase::Done) {
         const Result r = result(s);
