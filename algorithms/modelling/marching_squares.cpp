@@ -635,13 +635,15 @@ void MarchingSquares::draw(const State& s, Scene& scene) {
                                     glm::dvec2(0, 0.02 * std::max(W, H)),
                                 label,
                                 {Role::Active}});
-    } else {
-        scene.polygons.push_back({{g.point(i, j), g.point(last % g.nx + 1, last / g.nx),
-                                   g.point(last % g.nx + 1, last / g.nx + 1),
-                                   g.point(i, j + 1)},
-                                  {Role::Active, 1.5f, true},
-                                  true,
-                                  false});
+    } else if (s.next - s.from <= 64) {  // a run of empty cells (or a small batch), dashed
+        for (int c = s.from; c <= last; ++c) {
+            const int ci = c % g.nx, cj = c / g.nx;
+            scene.polygons.push_back({{g.point(ci, cj), g.point(ci + 1, cj),
+                                       g.point(ci + 1, cj + 1), g.point(ci, cj + 1)},
+                                      {Role::Active, 1.5f, true},
+                                      true,
+                                      false});
+        }
     }
 }
 
