@@ -24,8 +24,10 @@ int index_at(const json& v, const std::string& field, std::size_t count) {
         throw InputError(field, "must be an index (an integer), got " + describe(v));
     if (v.is_number_unsigned() ? v.get<std::uint64_t>() >= count
                                : (v.get<long long>() < 0 || v.get<long long>() >= (long long)count))
-        throw InputError(field, "index " + v.dump() + " is out of range (0 to " +
-                                    std::to_string(count) + " − 1)");
+        throw InputError(field, "index " + v.dump() + " is out of range (" +
+                                    (count == 0 ? std::string("there is nothing to index")
+                                                : "0 to " + std::to_string(count - 1)) +
+                                    ")");
     return int(v.get<long long>());
 }
 
