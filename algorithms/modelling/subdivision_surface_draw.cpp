@@ -4,6 +4,7 @@
 // weight. After a level is joined, the finer mesh in green with its new vertices marked.
 #include <algorithm>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "core/format.hpp"
 #include "modelling/subdivision_surface.hpp"
@@ -89,8 +90,10 @@ void SubdivisionSurface::draw(const State& s, Scene& scene) {
                     s.points.vertex[std::size_t(v)], "V" + std::to_string(v) + "'", scene);
         }
     }
-    dvec3 lo = P[0];
-    for (const auto& p : P) lo = glm::min(lo, p);
+    // The caption under the mesh, centred, so it stays on the canvas.
+    dvec3 lo = P[0], hi = P[0];
+    for (const auto& p : P) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const double size = std::max(glm::length(hi - lo), 1e-300);
     const std::string scheme = in.scheme == Scheme::Loop ? "Loop" : "Catmull–Clark";
     const std::string caption =
         working ? scheme + ", level " + std::to_string(s.level + 1) +
@@ -102,7 +105,9 @@ void SubdivisionSurface::draw(const State& s, Scene& scene) {
                       std::to_string(m.vertices.size()) + " vertices, " +
                       std::to_string(m.faces.size()) + " faces" +
                       (joined && s.level > 0 ? " (new vertices teal)" : "");
-    scene.labels3.push_back({lo - dvec3(0, 0.3, 0), caption, {Role::Neutral}});
+    scene.labels3.push_back({dvec3(0.5 * (lo.x + hi.x), lo.y - 0.12 * size, 0.5 * (lo.z + hi.z)),
+                             caption,
+                             {Role::Neutral}});
 }
 
 }  // namespace cg
