@@ -330,7 +330,7 @@ const Spec& SubdivisionSurface::spec() {
             .predict = {{"face-points", {"face_point"}},
                         {"edge-points", {"edge_point"}},
                         {"vertex-points", {"vertex_point"}},
-                        {"connect", {"V", "E", "F"}}},
+                        {"connect", {"V", "F"}}},
             .mistakes =
                 {
                     {"vertex-points", "vertex_point", "copy:v",
