@@ -752,7 +752,7 @@ void narrate_vertex(const State& s, StepInfo& info) {
     info.event = "vertex-points";
     info.line = kLineVertex;
     info.narration = level_text(s) + ": every old vertex moves. V" + std::to_string(v) + " (" +
-                     st.rule + "):" + why + ". New V" + std::to_string(v) + " = " +
+                     st.rule + ")" + (why.empty() ? "" : ":" + why) + ". New V" + std::to_string(v) + " = " +
                      weighted_sum(st) + " = " + num(p) + " (was " + num(old) + ").";
     info.math = "V_{" + std::to_string(v) + "}' = " + weighted_tex(st) + " = " + tex(p);
     info.vars = {{"vertex", (long long)v}, {"v", vec(old)}, {"weights", st.weights},
