@@ -140,7 +140,7 @@ TEST_CASE("silhouette-edges: any outside eye sees a cube silhouette of 4 or 6 ed
     CHECK(fours > 50);
 }
 
-TEST_CASE("silhouette-edges: agrees with the brute-force pairs on spheres, tori and random eyes; closed loops",
+TEST_CASE("silhouette-edges: agrees with the brute-force pairs on spheres, tori and random eyes, closed loops",
           "[npr][silhouette]") {
     const cg::npr::Mesh meshes[] = {cg::npr::generate("sphere", 8), cg::npr::generate("sphere", 16),
                                     cg::npr::generate("torus", 12), cg::npr::generate("torus", 16)};
@@ -202,7 +202,7 @@ TEST_CASE("silhouette-edges: open meshes list their boundary apart", "[npr][silh
     }
 }
 
-TEST_CASE("silhouette-edges: the state machine equals the plain function; copies and traces repeat",
+TEST_CASE("silhouette-edges: the state machine equals the plain function, copies and traces repeat",
           "[npr][silhouette]") {
     const auto in = with_eye(cg::npr::generate("torus", 16), {2, 3, 4});
     SilhouetteEdges::State s = SilhouetteEdges::start(in);

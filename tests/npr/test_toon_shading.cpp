@@ -199,7 +199,7 @@ TEST_CASE("toon-shading: the 1D texture lookup gives the same bands", "[npr][too
     }
 }
 
-TEST_CASE("toon-shading: the state machine equals the plain function; copies and traces repeat", "[npr][toon]") {
+TEST_CASE("toon-shading: the state machine equals the plain function, copies and traces repeat", "[npr][toon]") {
     ToonShading::Input in;
     in.mesh = cg::npr::generate("sphere", 16);
     in.light = {1, 2, 3};
