@@ -199,6 +199,12 @@ void SilhouetteEdges::narrate(const State& s, StepInfo& info) {
             info.narration = "Edge " + E + " joins " + fb(e.f) + " and " + fb(e.g) +
                              (sil ? ": they differ, a silhouette edge." : ": the same side, not a silhouette edge.");
         }
+        auto side = [&](int f) {
+            return std::string(s.r.front[static_cast<std::size_t>(f)] ? "\\text{front}" : "\\text{back}");
+        };
+        info.math = e.g < 0 ? "F_{" + std::to_string(e.f) + "}: " + side(e.f) + ",\\quad \\text{one face: boundary}"
+                            : "F_{" + std::to_string(e.f) + "}: " + side(e.f) + ",\\quad F_{" + std::to_string(e.g) +
+                                  "}: " + side(e.g) + (info.event == "silhouette" ? ",\\quad \\text{differ}" : ",\\quad \\text{same}");
         info.vars.push_back({"edge", std::vector<double>{static_cast<double>(id(e.a, e.b)[0]),
                                                          static_cast<double>(id(e.a, e.b)[1])}});
         info.vars.push_back({"F", static_cast<long long>(e.f)});
@@ -228,7 +234,6 @@ void SilhouetteEdges::step(State& s, StepInfo* info) {
 // ---- [plain] --------------------------------------------------------------------------------
 
 [[gnu::flatten]] SilhouetteEdges::Result SilhouetteEdges::compute(const Input& in) {
-    validate(in);
     const std::vector<Edge> edges = edge_list(in.mesh);
     Result r;
     r.edges = static_cast<int>(edges.size());

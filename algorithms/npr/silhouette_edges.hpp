@@ -90,7 +90,7 @@ struct SilhouetteEdges {
     static std::string question(const Input& in);
     static std::vector<std::string> answer_fields();
 
-    // The straight-line function.
+    // The straight-line function, for a valid input (validate() first; start() does).
     static Result compute(const Input& in);
 
     // The mesh's edges (throws InputError "faces[k]" for an edge with a third face or two

@@ -58,7 +58,10 @@ struct JsonIo<SilhouetteEdges> {
 
 Algorithm silhouette_edges_algorithm() {
     return make_algorithm<SilhouetteEdges>(
-        [](const SilhouetteEdges::Input& in) { return SilhouetteEdges::compute(in); });
+        [](const SilhouetteEdges::Input& in) {  // validated first, as start() does
+            SilhouetteEdges::validate(in);
+            return SilhouetteEdges::compute(in);
+        });
 }
 
 }  // namespace cg

@@ -201,7 +201,6 @@ void ToonShading::step(State& s, StepInfo* info) {
 // ---- [plain] --------------------------------------------------------------------------------
 
 [[gnu::flatten]] ToonShading::Result ToonShading::compute(const Input& in) {
-    validate(in);
     const glm::dvec3 l = unit(in.light);
     Result r;
     r.ndotl.reserve(in.mesh.faces.size());

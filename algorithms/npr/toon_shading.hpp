@@ -81,7 +81,7 @@ struct ToonShading {
     static std::string question(const Input& in);
     static std::vector<std::string> answer_fields();
 
-    // The straight-line function.
+    // The straight-line function, for a valid input (validate() first; start() does).
     static Result compute(const Input& in);
 
     // The rule itself: the band of diffuse intensity d (the number of thresholds ≤ d).

@@ -63,7 +63,11 @@ struct JsonIo<ToonShading> {
 };
 
 Algorithm toon_shading_algorithm() {
-    return make_algorithm<ToonShading>([](const ToonShading::Input& in) { return ToonShading::compute(in); });
+    // The plain function validates first, as start() does: compute() assumes a valid input.
+    return make_algorithm<ToonShading>([](const ToonShading::Input& in) {
+        ToonShading::validate(in);
+        return ToonShading::compute(in);
+    });
 }
 
 }  // namespace cg
