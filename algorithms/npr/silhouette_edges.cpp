@@ -254,7 +254,7 @@ void SilhouetteEdges::step(State& s, StepInfo* info) {
 
 void SilhouetteEdges::draw(const State& s, Scene& scene) {
     // Front faces filled with their toon band's colour, back faces faint grey (not yet
-    // classified: fainter still); silhouette edges thick black-ish (Neutral, width 5), boundary
+    // classified: fainter still); silhouette edges thick magenta (width 5), boundary
     // edges dashed; the edge being decided orange; the eye.
     const auto& in = *s.in;
     const auto& m = in.mesh;
@@ -282,7 +282,8 @@ void SilhouetteEdges::draw(const State& s, Scene& scene) {
         scene.faces3.push_back(std::move(face));
     }
     auto P = [&](int i) { return m.vertices[static_cast<std::size_t>(i)]; };
-    for (const auto& e : s.r.silhouette) scene.segments3.push_back({P(e[0]), P(e[1]), "", {Role::Neutral, 5.0f}});
+    // Magenta rather than a cartoon's black: it must stand out against the darkest band too.
+    for (const auto& e : s.r.silhouette) scene.segments3.push_back({P(e[0]), P(e[1]), "", {Role::Leaving, 5.0f}});
     for (const auto& e : s.r.boundary)
         scene.segments3.push_back({P(e[0]), P(e[1]), "", {Role::Window, 2.0f, true}});
     if (s.last == Phase::Edge && s.phase != Phase::Done) {
