@@ -57,7 +57,7 @@ struct JsonIo<ToonShading> {
         // sides and its base fall into three bands.
         return json{{"vertices", {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {0, 1.5, 0}}},
                     {"faces", {{0, 1, 2, 3}, {3, 2, 4}, {2, 1, 4}, {1, 0, 4}, {0, 3, 4}}},
-                    {"light", {2, 3, 1}},
+                    {"light", {3, 3, 1}},
                     {"thresholds", {0.3, 0.7}}};
     }
 };
