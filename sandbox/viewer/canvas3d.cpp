@@ -4,12 +4,13 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <numbers>
 #include <string>
-
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
+#include <tuple>
+#include <unordered_map>
 
 #include "viewer/canvas_draw.hpp"
 #include "viewer/im_colour.hpp"
@@ -62,7 +63,9 @@ void for_each_point(const Scene& scene, F&& f) {
     }
 }
 
-bool finite(glm::dvec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite(glm::dvec3 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 }  // namespace
 
@@ -122,8 +125,8 @@ bool interact3(Camera3& c, const Box& canvas) {
     }
     if (c.orbiting) {
         // Always from the drag's start: the arcball's rotation depends only on S and T.
-        c.view.rotation = glm::normalize(trackball::arcball(c.grab, ball(io.MousePos)) *
-                                         c.grab_rotation);
+        c.view.rotation =
+            glm::normalize(trackball::arcball(c.grab, ball(io.MousePos)) * c.grab_rotation);
         ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeAll);
     } else if (c.panning) {
         // Move the target across the view plane so the point under the mouse follows it.
@@ -176,6 +179,24 @@ struct PendingLabel {
     double gap;
 };
 
+// A mesh edge by its two world-space ends, either way round: a segment drawn along a face's
+// edge (an outline, a silhouette, a crease) is found by it.
+struct EdgeKey {
+    glm::dvec3 a, b;
+    EdgeKey(glm::dvec3 p, glm::dvec3 q) : a(p), b(q) {
+        if (std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z)) std::swap(a, b);
+    }
+    bool operator==(const EdgeKey&) const = default;
+};
+struct EdgeKeyHash {
+    std::size_t operator()(const EdgeKey& k) const {
+        std::size_t h = 0;
+        for (double v : {k.a.x, k.a.y, k.a.z, k.b.x, k.b.y, k.b.z})
+            h = h * 1000003u ^ std::hash<double>{}(v);
+        return h;
+    }
+};
+
 struct Collector {
     const Projector& proj;
     std::vector<Line> lines;
@@ -183,6 +204,11 @@ struct Collector {
     std::vector<Dot> dots;
     std::vector<Item> items;
     std::vector<PendingLabel> labels;
+    // The nearest depth of the faces along each face edge. A segment lying on a face's edge
+    // has the face's depth at best (its midpoint's against the face's centroid: either can be
+    // the nearer), so by depth alone the face would paint over it about half the time; a
+    // segment on an edge is drawn just in front of the nearest face that has that edge.
+    std::unordered_map<EdgeKey, double, EdgeKeyHash> face_edges;
 
     // A segment cut at the near plane; returns false when wholly behind it.
     bool clip_near(glm::dvec3& a, glm::dvec3& b) const {
@@ -201,11 +227,15 @@ struct Collector {
         if (!clip_near(a, b)) return;
         arrow = arrow && b == b_before;  // no head on a cut end
         lines.push_back({proj.project_view(a), proj.project_view(b), rgba, width, dashed, arrow});
-        items.push_back({(proj.depth(a) + proj.depth(b)) / 2, Item::kLine,
-                         static_cast<int>(lines.size() - 1)});
+        double depth = (proj.depth(a) + proj.depth(b)) / 2;
+        if (!face_edges.empty()) {
+            if (auto e = face_edges.find(EdgeKey(wa, wb)); e != face_edges.end())
+                depth = std::min(depth, e->second * (1 - 1e-9));
+        }
+        items.push_back({depth, Item::kLine, static_cast<int>(lines.size() - 1)});
         if (!label.empty())
-            labels.push_back({2, label, darker(rgba | 0xffu, 0.8f),
-                              (lines.back().a + lines.back().b) / 2.0, 8});
+            labels.push_back(
+                {2, label, darker(rgba | 0xffu, 0.8f), (lines.back().a + lines.back().b) / 2.0, 8});
     }
 
     void face(const Face3& f) {
@@ -226,11 +256,18 @@ struct Collector {
         }
         const bool back = !f.two_sided && area2 < 0;
         const std::uint32_t base = back ? kBackFace : style_rgba(f.style);
-        const double alpha = std::clamp(static_cast<double>(f.alpha) * (back ? 0.6 : 1.0), 0.0, 1.0);
-        fills.push_back({std::move(screen), with_alpha(base, static_cast<std::uint32_t>(alpha * 255)),
+        const double alpha =
+            std::clamp(static_cast<double>(f.alpha) * (back ? 0.6 : 1.0), 0.0, 1.0);
+        fills.push_back({std::move(screen),
+                         with_alpha(base, static_cast<std::uint32_t>(alpha * 255)),
                          f.outline ? darker(base | 0xffu, back ? 0.9f : 0.75f) : 0u});
-        items.push_back({depth / static_cast<double>(f.points.size()), Item::kFill,
-                         static_cast<int>(fills.size() - 1)});
+        depth /= static_cast<double>(f.points.size());
+        items.push_back({depth, Item::kFill, static_cast<int>(fills.size() - 1)});
+        for (std::size_t i = 0; i < f.points.size(); ++i) {
+            auto [e, fresh] = face_edges.try_emplace(
+                EdgeKey(f.points[i], f.points[(i + 1) % f.points.size()]), depth);
+            if (!fresh) e->second = std::min(e->second, depth);
+        }
     }
 
     void dot(glm::dvec3 w, std::uint32_t rgba, float radius, const std::string& label) {
@@ -248,7 +285,8 @@ struct Collector {
     }
 
     void frame(const Frame3& f) {
-        const std::uint32_t alpha = static_cast<std::uint32_t>(std::clamp(f.alpha, 0.0f, 1.0f) * 255);
+        const std::uint32_t alpha =
+            static_cast<std::uint32_t>(std::clamp(f.alpha, 0.0f, 1.0f) * 255);
         const glm::dvec3 axes[3] = {f.x, f.y, f.z};
         const std::uint32_t colours[3] = {kAxisX, kAxisY, kAxisZ};
         const char* names[3] = {"x", "y", "z"};
@@ -267,8 +305,10 @@ struct Collector {
         const double cz = std::round(proj.view.target.z / step) * step;
         for (int i = -n; i <= n; ++i) {
             const double o = i * step;
-            line({cx + o, 0, cz - n * step}, {cx + o, 0, cz + n * step}, kFloor, 1.0f, false, false);
-            line({cx - n * step, 0, cz + o}, {cx + n * step, 0, cz + o}, kFloor, 1.0f, false, false);
+            line({cx + o, 0, cz - n * step}, {cx + o, 0, cz + n * step}, kFloor, 1.0f, false,
+                 false);
+            line({cx - n * step, 0, cz + o}, {cx + n * step, 0, cz + o}, kFloor, 1.0f, false,
+                 false);
         }
         const double length = 2 * step;
         const glm::dvec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -354,7 +394,9 @@ void draw_scene3(ImDrawList* dl, const Projector& proj, const Scene& scene, cons
     for (std::size_t i = 0; i < c.items.size(); ++i) {
         const Item& it = c.items[i];
         switch (it.kind) {
-            case Item::kFill: paint_fill(dl, c.fills[it.index]); break;
+            case Item::kFill:
+                paint_fill(dl, c.fills[it.index]);
+                break;
             case Item::kLine: {
                 const Line& l = c.lines[it.index];
                 paint_line(dl, l);
@@ -370,15 +412,17 @@ void draw_scene3(ImDrawList* dl, const Projector& proj, const Scene& scene, cons
         }
     }
 
-    std::stable_sort(c.labels.begin(), c.labels.end(),
-                     [](const PendingLabel& a, const PendingLabel& b) { return a.priority < b.priority; });
+    std::stable_sort(
+        c.labels.begin(), c.labels.end(),
+        [](const PendingLabel& a, const PendingLabel& b) { return a.priority < b.priority; });
     const float size = fonts.ui->FontSize;
     for (const PendingLabel& l : c.labels) {
         const ImVec2 t = fonts.ui->CalcTextSizeA(size, FLT_MAX, 0, l.text.c_str());
         const glm::dvec2 box_size{t.x + 6, t.y + 2};
         const Box box = placer.place(box_size, LabelPlacer::around(l.anchor, box_size, l.gap));
         dl->AddRectFilled(im(box.min), im(box.max), im_colour(kLabelHalo), 3.0f);
-        dl->AddText(fonts.ui, size, im(box.min + glm::dvec2(3, 1)), im_colour(l.rgba), l.text.c_str());
+        dl->AddText(fonts.ui, size, im(box.min + glm::dvec2(3, 1)), im_colour(l.rgba),
+                    l.text.c_str());
     }
 }
 
