@@ -83,14 +83,6 @@ double SphereTracing::distance(const Input& in, glm::dvec3 p) {
     return d;
 }
 
-glm::dvec3 SphereTracing::unit_direction(const Input& in) {
-    // Scaled by the largest component first, so a tiny or huge direction normalises exactly.
-    const glm::dvec3 a = glm::abs(in.direction);
-    const double m = std::max(a.x, std::max(a.y, a.z));
-    const glm::dvec3 v = in.direction / m;
-    return v / glm::length(v);
-}
-
 const char* SphereTracing::kind_name(Kind k) {
     switch (k) {
         case Kind::Sphere:
@@ -240,7 +232,7 @@ SphereTracing::State SphereTracing::start(const Input& in) {
 
 SphereTracing::State SphereTracing::begin(Shared<Input> shared) {
     State s;
-    s.unit = unit_direction(*shared);
+    s.unit = unit(shared->direction);
     s.in = std::move(shared);
     return s;
 }
@@ -390,7 +382,7 @@ SphereTracing::Result SphereTracing::result(const State& s) {
 
 SphereTracing::Result SphereTracing::compute(const Input& in) {
     Result r;
-    const glm::dvec3 u = unit_direction(in);
+    const glm::dvec3 u = unit(in.direction);
     double t = 0;
     r.outcome = Outcome::OutOfSteps;
     for (int k = 0; k < in.max_steps; ++k) {

@@ -33,6 +33,7 @@
 #include "core/rng.hpp"
 #include "core/run.hpp"
 #include "core/shared.hpp"
+#include "core/vec.hpp"
 
 namespace cg {
 
@@ -111,7 +112,6 @@ struct SphereTracing {
     static double shape_distance(const Shape& s, glm::dvec3 p);  // exact signed distance
     static double smooth_min(double a, double b, double k);
     static double distance(const Input& in, glm::dvec3 p);  // the scene's bound f(p)
-    static glm::dvec3 unit_direction(const Input& in);
     static const char* kind_name(Kind k);
     static const char* combine_name(Combine c);
     static const char* outcome_name(Outcome o);

@@ -42,7 +42,7 @@ SphereTracing::Input SphereTracing::exam_input(Rng& rng) {
 std::string SphereTracing::question(const Input& in) {
     const Shape& s = in.shapes.at(0);
     return "A ray starts at o = " + num(in.origin) +
-           " with direction d̂ = " + num(unit_direction(in)) + ". The scene is one sphere, centre " +
+           " with direction d̂ = " + num(unit(in.direction)) + ". The scene is one sphere, centre " +
            num(s.centre) + ", radius " + num(s.size.x) +
            ", with signed distance f(p) = |p − c| − r. Sphere-trace "
            "it with ε = " +

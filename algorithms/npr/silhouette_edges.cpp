@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "core/format.hpp"
+#include "core/vec.hpp"
 #include "npr/toon_shading.hpp"
 
 namespace cg {
@@ -259,7 +260,7 @@ void SilhouetteEdges::draw(const State& s, Scene& scene) {
     const auto& in = *s.in;
     const auto& m = in.mesh;
     const auto colours = ToonShading::default_colours(static_cast<int>(in.thresholds.size()) + 1);
-    const glm::dvec3 l = ToonShading::unit(in.light);
+    const glm::dvec3 l = unit(in.light);
     const int classified = static_cast<int>(s.r.front.size());
     const bool small = m.faces.size() <= 24;
     for (std::size_t k = 0; k < m.faces.size(); ++k) {
@@ -271,7 +272,7 @@ void SilhouetteEdges::draw(const State& s, Scene& scene) {
             face.style = {Role::Neutral, 1.0f};
             face.alpha = 0.06f;
         } else if (s.r.front[k]) {
-            const double d = std::max(0.0, glm::dot(ToonShading::unit(npr::newell(m.vertices, f)), l));
+            const double d = std::max(0.0, glm::dot(unit(npr::newell(m.vertices, f)), l));
             const int b = ToonShading::band_of(d, in.thresholds);
             face.style = {Role::Subject, 1.0f, false, npr::rgba(colours[static_cast<std::size_t>(b)])};
             face.alpha = 1.0f;

@@ -59,11 +59,6 @@ const Spec& ToonShading::spec() {
 
 // ---- [validate] -----------------------------------------------------------------------------
 
-glm::dvec3 ToonShading::unit(glm::dvec3 v) {
-    const double q = glm::dot(v, v);
-    return q == 1 ? v : v / std::sqrt(q);
-}
-
 std::vector<glm::dvec3> ToonShading::default_colours(int n) {
     std::vector<glm::dvec3> c;
     for (int b = 0; b < n; ++b) {

@@ -27,6 +27,7 @@
 #include "core/rng.hpp"
 #include "core/run.hpp"
 #include "core/shared.hpp"
+#include "core/vec.hpp"
 #include "npr/npr_mesh.hpp"
 
 namespace cg {
@@ -90,8 +91,6 @@ struct ToonShading {
         for (double t : thresholds) b += d >= t;
         return b;
     }
-    // The unit vector v/|v|, left as it is when |v|² is already 1 in double.
-    static glm::dvec3 unit(glm::dvec3 v);
     // The default palette for n bands: a warm orange from dark to light.
     static std::vector<glm::dvec3> default_colours(int n);
 

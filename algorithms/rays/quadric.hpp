@@ -37,6 +37,8 @@
 // lies in the z slab.
 #pragma once
 
+#include "core/vec.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -159,21 +161,4 @@ inline double eval_F(const QuadricCoefficients& f, glm::dvec3 p) {
 inline glm::dvec3 gradient(const QuadricCoefficients& f, glm::dvec3 p) {
     return {2 * f.A * p.x, 2 * f.B * p.y, 2 * f.C * p.z + f.D};
 }
-// |v| without overflow or underflow: std::hypot's three-argument form scales as unit() does,
-// so the length a narration shows beside v/|v| is the one that made it (|(1e300, 0, 0)| is
-// 1e300, not the inf of √(x² + y² + z²)).
-inline double length_of(glm::dvec3 v) { return std::hypot(v.x, v.y, v.z); }
-
-// A unit vector along v without overflow or underflow; (0, 0, 0) for v = 0. The usual
-// v/|v| when |v|² is a comfortable number (a unit axis stays exact: √(x²) = |x|), else v is
-// first scaled by its largest component.
-inline glm::dvec3 unit(glm::dvec3 v) {
-    const double len2 = v.x * v.x + v.y * v.y + v.z * v.z;
-    if (len2 > 1e-290 && len2 < 1e290) return v / std::sqrt(len2);
-    const double m = std::max(std::max(std::fabs(v.x), std::fabs(v.y)), std::fabs(v.z));
-    if (m == 0) return glm::dvec3(0.0);
-    v /= m;
-    return v / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-}
-
 }  // namespace cg

@@ -374,7 +374,7 @@ void paint_dot(ImDrawList* dl, const Dot& d) {
 
 void draw_scene3(ImDrawList* dl, const Projector& proj, const Scene& scene, const Fonts& fonts,
                  const std::vector<Box>& keep_clear) {
-    Collector c{proj, {}, {}, {}, {}, {}};
+    Collector c{proj, {}, {}, {}, {}, {}, {}};
     const double radius = proj.view.distance * std::sin(glm::radians(proj.view.fov_y_deg) / 2);
     c.floor_and_axes(radius);
     const std::size_t first_scene_item = c.items.size();
