@@ -259,3 +259,28 @@ TEST_CASE("gui: the ray tracer's image fills in pixel by pixel, and a ray tree i
     CHECK(tree.find(cg::viewer::role_rgba(cg::Role::Discarded), 40).size() > 15);
     CHECK(tree.find(cg::viewer::role_rgba(cg::Role::Entering), 40).size() > 15);
 }
+
+TEST_CASE("gui: silhouette edges are drawn over the faces they bound, all round the outline",
+          "[gui][3d][silhouette-edges]") {
+    // A silhouette edge lies on a front face's border; sorted by depth alone it was hidden under
+    // that face about half the time, so the loop came out broken. The sphere's loop at the end
+    // must show in magenta (the Leaving role), at its full 5 px width (half hidden, the sphere
+    // shows about 980 such pixels, the cube about 510), in every quarter around its centre.
+    Image cube = render_args({"--lesson", "silhouette-edges", "--size", "600x450"},
+                             "silhouette-cube-end");
+    CHECK(cube.find(cg::viewer::role_rgba(cg::Role::Leaving), 40).size() > 1200);  // 1,647 drawn
+    Image img = render_args({"--lesson", "silhouette-edges", "--preset",
+                             "a sphere: the silhouette is a closed loop", "--size", "600x450"},
+                            "silhouette-sphere-end");
+    const auto magenta = img.find(cg::viewer::role_rgba(cg::Role::Leaving), 40);
+    REQUIRE(magenta.size() > 1350);  // 1,672 drawn
+    const Box box(magenta);
+    const int cx = (box.x0 + box.x1) / 2, cy = (box.y0 + box.y1) / 2;
+    int quarter[4] = {0, 0, 0, 0};
+    for (auto [x, y] : magenta) ++quarter[(x < cx ? 0 : 1) + (y < cy ? 0 : 2)];
+    for (int q : quarter) CHECK(q > 60);
+    // The box is roughly square: a loop, not a few stray segments.
+    const double aspect = double(box.x1 - box.x0) / std::max(1, box.y1 - box.y0);
+    CHECK(aspect > 0.8);
+    CHECK(aspect < 1.25);
+}
