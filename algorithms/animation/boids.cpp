@@ -102,7 +102,10 @@ Boids::Rules Boids::rules(const Input& in, const V2& x, const V2& v, std::size_t
         if (j == i) continue;
         const glm::dvec2 d = offset(in, xi, x[j]);
         if (!(std::fabs(d.x) < r && std::fabs(d.y) < r)) continue;  // cheap: outside the square
-        const double len = length(d);
+        // Inside the square |d| < √2·10⁶, so d·d cannot overflow; hypot only where it could
+        // underflow.
+        const double dd = glm::dot(d, d);
+        const double len = dd > 1e-200 ? std::sqrt(dd) : length(d);
         if (!(len < r)) continue;
         if (look && len > 0 && glm::dot(vi, d) < speed * len * cos_half) continue;
         ++out.neighbours;
