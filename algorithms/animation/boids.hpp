@@ -31,13 +31,14 @@
 // way, near 0: no common heading; a still boid counts as 0) and the mean distance from each boid
 // to its nearest neighbour (0 for a single boid).
 //
-// Refused: no boids, more than kMaxBoids boids or kMaxObstacles obstacles, coordinates above 1e6
-// in size, a boid outside the world, a speed above max_speed, r < 0, r_sep outside [0, r], fov
-// outside [0, 360] degrees, weights, speeds or max_force negative or above 1e6, min_speed above
-// max_speed, dt outside (0, 10], steps outside 1..kMaxSteps or steps × boids² above kMaxWork, an
-// empty or inverted world or one narrower than 1e-6, in a wrapped world r above half its
-// narrower side, a margin outside [10⁻³, ½] of that side, an obstacle radius ≤ 0, the focus out
-// of range, a random flock of 0 or more than kMaxBoids boids.
+// A boid or an obstacle given outside a wrapped world is taken round into it; a start faster
+// than max_speed is scaled down to it; r_sep above r acts as r (only neighbours are pushed).
+// Refused: no boids, more than kMaxBoids boids or kMaxObstacles obstacles, coordinates not
+// finite or above 1e6 in size, r or r_sep negative or above 1e6, fov outside [0, 360] degrees,
+// weights, speeds or max_force negative or above 1e6, min_speed above max_speed, dt outside
+// (0, 10], steps outside 1..kMaxSteps or steps × boids² above kMaxWork, a world with max ≤ min,
+// a wrapped world narrower than 2r, a margin outside [1e-6, 1e6], an obstacle radius ≤ 0, the
+// focus out of range, both boids and a random flock, a random flock of 0 or more than kMaxBoids.
 #pragma once
 
 #include <cstdint>
