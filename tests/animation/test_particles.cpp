@@ -380,7 +380,7 @@ TEST_CASE("particles: 3,000 random systems keep their counts and equal compute",
     CHECK(zero_life > 50);
 }
 
-TEST_CASE("particles: the same seed gives the same trace, byte for byte; replay and copies",
+TEST_CASE("particles: the same seed gives the same trace, byte for byte, with replay and copies",
           "[animation][particles]") {
     const auto& a = cg::test::algorithm("particles");
     cg::test::check_replay(a, a.example(), cg::test::kEveryStep);
