@@ -234,8 +234,7 @@ const Spec& Particles::spec() {
                 {
                     {"frame", "N", "off-by-one",
                      "rounded rate · t up instead of down: one particle too many"},
-                    {"frame", "v", "keep",
-                     "moved x with the old velocity and forgot v ← v + dt a"},
+                    {"frame", "v", "keep", "moved x with the old velocity and forgot v ← v + dt a"},
                     {"bounce", "v", "negate",
                      "reversed the whole velocity at the bounce, not just its normal part"},
                 },
@@ -285,7 +284,8 @@ void Particles::validate(const Input& in) {
                                        std::to_string(in.frames) + ")");
     check_point(e.position, "emitter.position");
     if (e.shape == Shape::Line) check_point(e.end, "emitter.end");
-    if (e.shape == Shape::Disc) check_range(e.radius, 0, kMaxCoordinate, "emitter.radius", "0 to 1e6");
+    if (e.shape == Shape::Disc)
+        check_range(e.radius, 0, kMaxCoordinate, "emitter.radius", "0 to 1e6");
     check_point(e.velocity, "emitter.velocity");
     check_range(e.spread, 0, 180, "emitter.spread", "an angle from 0 to 180 degrees");
     check_range(e.jitter, 0, 1, "emitter.jitter", "0 to 1 (a share of the speed)");
@@ -297,8 +297,8 @@ void Particles::validate(const Input& in) {
                                                  num(e.life_min) + ", " + num(e.life_max) + "])");
     const double total = e.rate * in.dt * double(in.frames);
     if (total > double(kMaxEmitted))
-        throw InputError("emitter.rate", num(e.rate) + " per second for " +
-                                             num(in.dt * in.frames) + " s makes " + num(total) +
+        throw InputError("emitter.rate", num(e.rate) + " per second for " + num(in.dt * in.frames) +
+                                             " s makes " + num(total) +
                                              " particles; at most 100000 in a run");
     if (in.start.size() > std::size_t(kMaxStart))
         throw InputError("start", "has " + std::to_string(in.start.size()) +
@@ -347,10 +347,9 @@ Particles::Input Particles::resolve(const Input& given) {
         in.plane.h = glm::dot(in.plane.normal, in.plane.point);
         const double scale = 1 + max_abs(in.emitter.position) + max_abs(in.plane.point);
         if (lowest(in.emitter, in.plane) < -1e-9 * scale)
-            throw InputError("emitter.position",
-                             "is below the plane (signed distance " +
-                                 num(lowest(in.emitter, in.plane)) +
-                                 "): particles would start inside the ground");
+            throw InputError("emitter.position", "is below the plane (signed distance " +
+                                                     num(lowest(in.emitter, in.plane)) +
+                                                     "): particles would start inside the ground");
         for (std::size_t i = 0; i < in.start.size(); ++i)
             if (distance(in.plane, in.start[i].position) < -1e-9 * scale)
                 throw InputError("start[" + std::to_string(i) + "].position",
@@ -454,13 +453,12 @@ std::string counts_text(const State& s) {
     const double t = double(s.k) * in.dt;
     std::string text = "Frame " + std::to_string(s.k) + ", t = " + num(t) + ": ";
     if (in.emitter.rate > 0)
-        text += "N(t) = ⌊rate · t⌋ = ⌊" + num(in.emitter.rate) + " · " + num(t) + "⌋ = " +
-                std::to_string(s.emitted) + ", so " + std::to_string(s.now.emitted) +
+        text += "N(t) = ⌊rate · t⌋ = ⌊" + num(in.emitter.rate) + " · " + num(t) +
+                "⌋ = " + std::to_string(s.emitted) + ", so " + std::to_string(s.now.emitted) +
                 " emitted (carry " + num(in.emitter.rate * t - double(s.emitted), 4) + "); ";
     else
         text += "the emitter is off (rate 0); ";
-    text += std::to_string(s.now.killed) + " killed, " + std::to_string(s.alive.size()) +
-            " alive" +
+    text += std::to_string(s.now.killed) + " killed, " + std::to_string(s.alive.size()) + " alive" +
             (s.now.bounced ? ", " + std::to_string(s.now.bounced) + " bounced" : std::string()) +
             ". ";
     return text;
@@ -478,8 +476,7 @@ std::string focus_text(const State& s) {
             return name + " has died (it was last at x = " + num(f.x) + ").";
         case Fate::Died:
             return name + " reached its lifetime " + num(f.lifetime) + " s (age " +
-                   num(double(s.k - f.born) * in.dt) + " s) and is killed at x = " + num(f.x) +
-                   ".";
+                   num(double(s.k - f.born) * in.dt) + " s) and is killed at x = " + num(f.x) + ".";
         case Fate::Born:
             return name + " is born at the emitter: x = " + num(f.x) + ", v = " + num(f.v) +
                    ", lifetime " + num(f.lifetime) + " s" +
@@ -499,8 +496,8 @@ std::string focus_text(const State& s) {
         t += " Below the plane by d = n·x − h = " + num(f.d) +
              ": reflected, x ← x − (1 + e) d n = " + num(f.x) + "; v_n = " + num(vn * n) +
              ", v_t = " + num(f.v1 - vn * n) + ", v ← −e v_n + (1 − μ) v_t = −" +
-             num(in.plane.restitution) + " v_n + " + num(1 - in.plane.friction) + " v_t = " +
-             num(f.v) + ".";
+             num(in.plane.restitution) + " v_n + " + num(1 - in.plane.friction) +
+             " v_t = " + num(f.v) + ".";
     }
     return t;
 }
@@ -535,13 +532,12 @@ void Particles::narrate(const State& s, StepInfo& info) {
     info.event = "summary";
     info.line = kLineReport;
     const double t = double(s.k) * in.dt;
-    info.narration = "Done: " + std::to_string(s.k) + " frames of dt = " + num(in.dt) +
-                     " (t = " + num(t) + "). Emitted " + std::to_string(s.emitted) +
-                     (in.start.empty() ? "" : " (and " + std::to_string(in.start.size()) +
-                                                  " at the start)") +
-                     ", killed " + std::to_string(s.killed) + ", " +
-                     std::to_string(s.alive.size()) + " alive, " + std::to_string(s.bounces) +
-                     " bounces in all.";
+    info.narration =
+        "Done: " + std::to_string(s.k) + " frames of dt = " + num(in.dt) + " (t = " + num(t) +
+        "). Emitted " + std::to_string(s.emitted) +
+        (in.start.empty() ? "" : " (and " + std::to_string(in.start.size()) + " at the start)") +
+        ", killed " + std::to_string(s.killed) + ", " + std::to_string(s.alive.size()) +
+        " alive, " + std::to_string(s.bounces) + " bounces in all.";
     info.math = "N(" + tex(t) + ") = " + std::to_string(s.emitted);
     frame_vars(s, info);
     info.vars.push_back({"bounces", (long long)s.bounces});

@@ -52,12 +52,12 @@ struct Particles {
 
     struct Emitter {
         Shape shape = Shape::Point;
-        glm::dvec3 position{0, 0, 0};  // the point, the disc's centre or the line's start
-        glm::dvec3 end{1, 0, 0};       // the line's end
-        double radius = 0.5;           // the disc's radius
-        glm::dvec3 velocity{0, 5, 0};  // v̄: the cone's axis, its length the mean speed
-        double spread = 15;            // the cone's half-angle, degrees
-        double jitter = 0;             // speed = |v̄| (1 + jitter u), u ∈ [−1, 1)
+        glm::dvec3 position{0, 0, 0};       // the point, the disc's centre or the line's start
+        glm::dvec3 end{1, 0, 0};            // the line's end
+        double radius = 0.5;                // the disc's radius
+        glm::dvec3 velocity{0, 5, 0};       // v̄: the cone's axis, its length the mean speed
+        double spread = 15;                 // the cone's half-angle, degrees
+        double jitter = 0;                  // speed = |v̄| (1 + jitter u), u ∈ [−1, 1)
         double life_min = 2, life_max = 2;  // seconds
         double rate = 20;                   // particles per second
         bool operator==(const Emitter&) const = default;

@@ -52,7 +52,8 @@ void Particles::draw(const State& s, Scene& scene) {
     glm::dvec3 centre = e.position;
     if (e.shape == Shape::Line) centre = 0.5 * (e.position + e.end);
     glm::dvec3 v_mean = e.velocity;
-    if (e.rate == 0 && !in.start.empty()) centre = in.start[0].position, v_mean = in.start[0].velocity;
+    if (e.rate == 0 && !in.start.empty())
+        centre = in.start[0].position, v_mean = in.start[0].velocity;
     double speed = glm::length(v_mean) * (1 + e.jitter);
     const double life = std::min(max_lifetime(in), duration);
     const double T = life > 0 ? life : duration;
@@ -77,27 +78,30 @@ void Particles::draw(const State& s, Scene& scene) {
         glm::dvec3 a, b;
         tangent_basis(n, a, b);
         const double S = 0.8 * reach;
-        scene.faces3.push_back({{c - S * a - S * b, c + S * a - S * b, c + S * a + S * b,
-                                 c - S * a + S * b},
-                                {Role::Kept, 1.0f},
-                                0.18f,
-                                true,
-                                true});
-        scene.labels3.push_back({c + S * a + S * b,
-                                 "plane e = " + num(in.plane.restitution, 3) +
-                                     ", μ = " + num(in.plane.friction, 3),
-                                 {Role::Neutral}});
+        scene.faces3.push_back(
+            {{c - S * a - S * b, c + S * a - S * b, c + S * a + S * b, c - S * a + S * b},
+             {Role::Kept, 1.0f},
+             0.18f,
+             true,
+             true});
+        scene.labels3.push_back(
+            {c + S * a + S * b,
+             "plane e = " + num(in.plane.restitution, 3) + ", μ = " + num(in.plane.friction, 3),
+             {Role::Neutral}});
     }
 
     // The emitter (none drawn when it is off).
-    switch (e.rate > 0 ? e.shape : Shape(255)) {
+    switch (e.shape) {
         case Shape::Point:
+            if (e.rate == 0) break;
             scene.points3.push_back({e.position, "emitter", {Role::Window}, 6.0f});
             break;
         case Shape::Line:
+            if (e.rate == 0) break;
             scene.segments3.push_back({e.position, e.end, "emitter", {Role::Window, 3.0f}, false});
             break;
         case Shape::Disc: {
+            if (e.rate == 0) break;
             const double len = glm::length(e.velocity);
             const glm::dvec3 w = len > 0 ? e.velocity / len : glm::dvec3(0, 1, 0);
             glm::dvec3 a, b;
@@ -112,13 +116,13 @@ void Particles::draw(const State& s, Scene& scene) {
             scene.labels3.push_back({e.position, "emitter", {Role::Window}});
             break;
         }
-        default:
-            break;
     }
     if (glm::length(e.velocity) > 0 && e.rate > 0)
-        scene.segments3.push_back({e.position, e.position + 0.25 * reach / glm::length(e.velocity) *
-                                                                e.velocity,
-                                   "v̄", {Role::Window, 1.5f, true}, true});
+        scene.segments3.push_back({e.position,
+                                   e.position + 0.25 * reach / glm::length(e.velocity) * e.velocity,
+                                   "v̄",
+                                   {Role::Window, 1.5f, true},
+                                   true});
 
     // The particles, coloured by age.
     const std::size_t n = s.alive.size();
@@ -143,8 +147,7 @@ void Particles::draw(const State& s, Scene& scene) {
     // The focus particle.
     const Focus& f = s.focus;
     if (f.fate == Fate::Moved || f.fate == Fate::Born) {
-        scene.points3.push_back(
-            {f.x, "#" + std::to_string(in.focus), {Role::Active}, 6.0f});
+        scene.points3.push_back({f.x, "#" + std::to_string(in.focus), {Role::Active}, 6.0f});
         if (glm::length(f.v) > 0 && tick > 0)
             scene.segments3.push_back({f.x, f.x + tick * f.v, "v", {Role::Active, 2.0f}, true});
     }
@@ -173,8 +176,10 @@ void Particles::draw(const State& s, Scene& scene) {
     const int emitted_now = s.emitted_n.empty() ? 0 : s.emitted_n.back();
     const int killed_now = s.killed_n.empty() ? 0 : s.killed_n.back();
     scene.labels.push_back({{0, ph + 1.9}, "alive " + std::to_string(n), {Role::Active}});
-    scene.labels.push_back({{0, ph + 1.15}, "emitted " + std::to_string(emitted_now), {Role::Entering}});
-    scene.labels.push_back({{0, ph + 0.4}, "killed " + std::to_string(killed_now), {Role::Leaving}});
+    scene.labels.push_back(
+        {{0, ph + 1.15}, "emitted " + std::to_string(emitted_now), {Role::Entering}});
+    scene.labels.push_back(
+        {{0, ph + 0.4}, "killed " + std::to_string(killed_now), {Role::Leaving}});
     scene.labels.push_back({{0, -0.4}, "t = 0", {Role::Neutral}});
     scene.labels.push_back({{pw - 1, -0.4}, "t = " + num(duration, 4), {Role::Neutral}});
     scene.labels.push_back({{pw + 0.2, ph}, std::to_string(top), {Role::Neutral}});

@@ -33,8 +33,8 @@ glm::dvec3 point(const json& v, const std::string& field) {
 }
 
 void emitter(const Reader& r, Particles::Emitter& e) {
-    r.only({"shape", "position", "end", "radius", "velocity", "spread", "jitter", "lifetime",
-            "rate"});
+    r.only(
+        {"shape", "position", "end", "radius", "velocity", "spread", "jitter", "lifetime", "rate"});
     if (r.has("shape")) {
         const std::string s = r.string("shape");
         if (s == "point")
@@ -105,13 +105,15 @@ struct JsonIo<Particles> {
             const Reader p = r.object("plane");
             p.only({"point", "normal", "restitution", "friction"});
             in.plane.on = true;
-            if (p.has("point")) in.plane.point = particles_json::point(p.get("point"), p.field("point"));
+            if (p.has("point"))
+                in.plane.point = particles_json::point(p.get("point"), p.field("point"));
             if (p.has("normal"))
                 in.plane.normal = particles_json::point(p.get("normal"), p.field("normal"));
             if (p.has("restitution")) in.plane.restitution = p.number("restitution");
             if (p.has("friction")) in.plane.friction = p.number("friction");
         }
-        if (r.has("gravity")) in.gravity = particles_json::point(r.get("gravity"), r.field("gravity"));
+        if (r.has("gravity"))
+            in.gravity = particles_json::point(r.get("gravity"), r.field("gravity"));
         if (r.has("drag")) in.drag = r.number("drag");
         if (r.has("dt")) in.dt = r.number("dt");
         if (r.has("frames"))

@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <set>
 #include <glm/geometric.hpp>
+#include <set>
 
 #include "animation/particles.hpp"
 #include "core/rng.hpp"
@@ -61,7 +61,9 @@ Input random_system(cg::Rng& rng) {
     e.jitter = rng.chance(0.5) ? 0 : rng.uniform(0, 1);
     e.life_min = rng.chance(0.1) ? 0 : rng.uniform(0, 1.5);
     e.life_max = rng.chance(0.3) ? e.life_min : e.life_min + rng.uniform(0, 1);
-    e.rate = rng.chance(0.1) ? 0 : rng.chance(0.3) ? double(rng.integer(1, 60)) : rng.uniform(0, 60);
+    e.rate = rng.chance(0.1)   ? 0
+             : rng.chance(0.3) ? double(rng.integer(1, 60))
+                               : rng.uniform(0, 60);
     const int starts = rng.chance(0.5) ? 0 : int(rng.integer(1, 4));
     for (int i = 0; i < starts; ++i) {
         Particles::Start s;
@@ -77,9 +79,9 @@ Input random_system(cg::Rng& rng) {
     in.drag = rng.chance(0.5) ? 0 : rng.uniform(0, std::min(3.0, 1 / in.dt));
     if (rng.chance(0.7)) {
         in.plane.on = true;
-        in.plane.normal = rng.chance(0.5) ? glm::dvec3(0, 1, 0)
-                                          : glm::dvec3(rng.uniform(-0.5, 0.5), 1,
-                                                       rng.uniform(-0.5, 0.5));
+        in.plane.normal = rng.chance(0.5)
+                              ? glm::dvec3(0, 1, 0)
+                              : glm::dvec3(rng.uniform(-0.5, 0.5), 1, rng.uniform(-0.5, 0.5));
         in.plane.restitution = rng.chance(0.2) ? double(rng.integer(0, 1)) : rng.uniform(0, 1);
         in.plane.friction = rng.chance(0.3) ? 0 : rng.uniform(0, 1);
         const glm::dvec3 n = glm::normalize(in.plane.normal);
@@ -108,7 +110,7 @@ TEST_CASE("particles: N(t) = ⌊rate · t⌋ exactly, with the fraction carried"
         const struct {
             double rate, dt;
             long long num, den;  // N(k dt) = ⌊k num / den⌋ for the decimal values
-        } cases[] = {{10, 0.1, 1, 1},  {20, 0.05, 1, 1}, {5, 0.1, 1, 2},   {30, 0.02, 3, 5},
+        } cases[] = {{10, 0.1, 1, 1},  {20, 0.05, 1, 1}, {5, 0.1, 1, 2},    {30, 0.02, 3, 5},
                      {2.5, 0.1, 1, 4}, {50, 0.02, 1, 1}, {100, 0.01, 1, 1}, {7, 0.1, 7, 10}};
         for (const auto& c : cases) {
             CAPTURE(c.rate, c.dt);
@@ -123,8 +125,8 @@ TEST_CASE("particles: N(t) = ⌊rate · t⌋ exactly, with the fraction carried"
         int sure = 0, unsure = 0;
         for (int trial = 0; trial < 4000; ++trial) {
             const double rate = rng.chance(0.3) ? double(rng.integer(0, 200)) : rng.uniform(0, 200);
-            const double dt = rng.chance(0.3) ? 1.0 / double(rng.integer(10, 120))
-                                              : rng.uniform(0.001, 0.2);
+            const double dt =
+                rng.chance(0.3) ? 1.0 / double(rng.integer(10, 120)) : rng.uniform(0.001, 0.2);
             const int k = int(rng.integer(0, 100000));
             CAPTURE(trial, rate, dt, k);
             bool ok = false;
@@ -264,8 +266,8 @@ TEST_CASE("particles: a bounce never gains energy and never leaves a particle be
     for (int trial = 0; trial < 100000; ++trial) {
         Particles::Plane p;
         p.on = true;
-        p.normal = glm::normalize(glm::dvec3(rng.uniform(-1, 1), rng.uniform(0.1, 1),
-                                             rng.uniform(-1, 1)));
+        p.normal =
+            glm::normalize(glm::dvec3(rng.uniform(-1, 1), rng.uniform(0.1, 1), rng.uniform(-1, 1)));
         p.point = {rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5)};
         p.h = glm::dot(p.normal, p.point);
         p.restitution = rng.chance(0.2) ? double(rng.integer(0, 1)) : rng.uniform(0, 1);
@@ -281,9 +283,9 @@ TEST_CASE("particles: a bounce never gains energy and never leaves a particle be
         Particles::bounce(p, d, x, v);
         CAPTURE(trial);
         CHECK(Particles::distance(p, x) >= 0);
-        const LD dl = LD(p.normal.x) * x.x + LD(p.normal.y) * x.y + LD(p.normal.z) * x.z -
-                      (LD(p.normal.x) * p.point.x + LD(p.normal.y) * p.point.y +
-                       LD(p.normal.z) * p.point.z);
+        const LD dl =
+            LD(p.normal.x) * x.x + LD(p.normal.y) * x.y + LD(p.normal.z) * x.z -
+            (LD(p.normal.x) * p.point.x + LD(p.normal.y) * p.point.y + LD(p.normal.z) * p.point.z);
         CHECK(dl >= -1e-13L);
         // Kinetic energy ½|v|² never grows; the normal speed is −e times the old one.
         CHECK(glm::dot(v, v) <= glm::dot(v_before, v_before) * (1 + 1e-12));
@@ -352,8 +354,7 @@ TEST_CASE("particles: 3,000 random systems keep their counts and equal compute",
         for (int k = 0; k < plain.frames; ++k) {
             emitted += plain.emitted_per_frame[std::size_t(k)];
             killed += plain.killed_per_frame[std::size_t(k)];
-            CHECK(plain.alive_per_frame[std::size_t(k)] ==
-                  int(in.start.size()) + emitted - killed);
+            CHECK(plain.alive_per_frame[std::size_t(k)] == int(in.start.size()) + emitted - killed);
         }
         CHECK(emitted == plain.emitted);
         CHECK(killed == plain.killed);
@@ -414,8 +415,9 @@ TEST_CASE("particles: bad input names the field and the reason", "[animation][pa
     CHECK(err(R"({"emitter": {"rate": -1}})").find("emitter.rate: must be 0 to 1e6") == 0);
     CHECK(err(R"({"emitter": {"rate": 1000000}, "frames": 1000})")
               .find("emitter.rate: 1e+06 per second") == 0);
-    CHECK(err(R"({"emitter": {"lifetime": [2, 1]}})").find("emitter.lifetime: must be [min, max]") ==
-          0);
+    CHECK(
+        err(R"({"emitter": {"lifetime": [2, 1]}})").find("emitter.lifetime: must be [min, max]") ==
+        0);
     CHECK(err(R"({"emitter": {"lifetime": -1}})").find("emitter.lifetime: must be 0 to 1e6") == 0);
     CHECK(err(R"({"emitter": {"spread": 200}})").find("emitter.spread: must be an angle") == 0);
     CHECK(err(R"({"emitter": {"shape": "cube"}})").find("emitter.shape: must be \"point\"") == 0);
@@ -461,7 +463,8 @@ TEST_CASE("particles: the focus particle's frame, narrated with its numbers",
     const std::string& n = t.steps[0].narration;
     CAPTURE(n);
     CHECK(t.steps[0].event == "frame");
-    CHECK(n.find("a = g − c v = (0, -10, 0) − 0.5 · (2, 4, 0) = (-1, -12, 0)") != std::string::npos);
+    CHECK(n.find("a = g − c v = (0, -10, 0) − 0.5 · (2, 4, 0) = (-1, -12, 0)") !=
+          std::string::npos);
     CHECK(n.find("= (1.9, 2.8, 0)") != std::string::npos);
     CHECK(n.find("= (0.19, 1.28, 0)") != std::string::npos);
     std::vector<std::string> names;
