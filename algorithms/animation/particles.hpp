@@ -178,6 +178,8 @@ struct Particles {
     // The pieces (on a resolved input).
     // N(t_k) = ⌊rate · dt · k⌋ of the exact real product of the three numbers.
     static long long emitted_by(double rate, double dt, int k);
+    // The fraction carried to the next frame, rate·dt·k − N (shown as 0 below 1e-9).
+    static double carry(double rate, double dt, int k);
     // Whether a particle `frames` frames old has reached its lifetime: frames·dt ≥ L, exactly.
     static bool aged_out(int frames, double dt, double lifetime);
     static double distance(const Plane& p, glm::dvec3 x);  // n·x − h

@@ -120,6 +120,20 @@ TEST_CASE("particles: N(t) = ⌊rate · t⌋ exactly, with the fraction carried"
             }
         }
     }
+    SECTION("the carried fraction rate · t − N: 2.5 a second at dt = 0.1") {
+        CHECK(Particles::carry(2.5, 0.1, 3) == Approx(0.75).epsilon(1e-12));
+        CHECK(Particles::carry(2.5, 0.1, 4) == 0);  // 1.0000000000000000555: shown as 0
+        CHECK(Particles::carry(2.5, 0.1, 5) == Approx(0.25).epsilon(1e-12));
+        CHECK(Particles::carry(0, 0.1, 5) == 0);
+        cg::Rng rng(3);
+        for (int trial = 0; trial < 1000; ++trial) {
+            const double rate = rng.uniform(0, 100), dt = rng.uniform(0.001, 0.1);
+            const int k = int(rng.integer(1, 10000));
+            const LD exact = LD(rate) * LD(dt) * LD(k) - LD(Particles::emitted_by(rate, dt, k));
+            CAPTURE(rate, dt, k);
+            CHECK(std::fabs(double(exact) - Particles::carry(rate, dt, k)) <= 1e-9);
+        }
+    }
     SECTION("4,000 random rates, steps and frame counts against long double") {
         cg::Rng rng(41);
         int sure = 0, unsure = 0;
