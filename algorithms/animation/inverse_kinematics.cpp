@@ -637,7 +637,7 @@ void narrate_shoulder(const State& s, StepInfo& info) {
         "° = " + num(r.down[0]) + "°. Taking elbow " + (in.elbow_up ? "up" : "down") +
         ", forward kinematics puts the end at " + pt(s, s.p.back()) + " (error " + num(s.error, 3) +
         ").";
-    info.math = "\\theta_1 = " + tex(in.elbow_up ? r.up[0] : r.down[0]) + "^\\circ";
+    info.math = "\\theta_1 = " + tex(in.elbow_up ? r.up[0] : r.down[0]) + "°";
     info.vars = {{"theta1_up", r.up[0]},     {"theta2_up", r.up[1]},     {"theta1_down", r.down[0]},
                  {"theta2_down", r.down[1]}, {"end", pv(s, s.p.back())}, {"error", s.error}};
 }
@@ -662,7 +662,7 @@ void narrate_ccd(const State& s, StepInfo& info) {
         t += " The target lies on this joint's axis: any turn is as good, none is made.";
     info.narration = t;
     info.math = "\\Delta\\theta_{" + std::to_string(j + 1) + "} = " + tex(deg(s.delta)) +
-                "^\\circ,\\ |e| = " + tex(s.error, 4);
+                "°,\\ |e| = " + tex(s.error, 4);
     info.vars = {{"k", (long long)s.k},
                  {"sweep", (long long)sweep},
                  {"j", (long long)(j + 1)},

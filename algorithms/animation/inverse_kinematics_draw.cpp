@@ -119,11 +119,8 @@ void IK::draw(const State& s, Scene& scene) {
                     {xy(s.p[i - 1]), xy(s.p[i]), "", {Role::Construction, 1.0f, true}, false});
                 continue;
             }
-            scene.segments.push_back({xy(s.p[i - 1]),
-                                      xy(s.p[i]),
-                                      labels ? "l" + std::to_string(i) : "",
-                                      {Role::Subject, 3.0f},
-                                      false});
+            scene.segments.push_back(
+                {xy(s.p[i - 1]), xy(s.p[i]), "", {Role::Subject, 3.0f}, false});
         }
         for (std::size_t i = 0; i <= shown; ++i) {
             const bool active = ccd_now && int(i) == s.joint;
@@ -161,8 +158,8 @@ void IK::draw(const State& s, Scene& scene) {
             scene.segments.push_back({end, xy(in.target), "e", {Role::Leaving, 2.0f, true}, true});
         }
         if (iterative) {
-            const double size = 2.2 * reach;
-            error_plot(s, scene, in.base.x + 1.3 * reach, in.base.y - 0.5 * size, size, size);
+            const double size = 1.3 * reach;
+            error_plot(s, scene, in.base.x + 1.25 * reach, in.base.y - 0.5 * size, size, size);
         }
         return;
     }

@@ -76,7 +76,7 @@ void BM_InverseKinematics_StepAndPicture3D(benchmark::State& state) {
     cg::bench::step_and_picture(state, "inverse-kinematics", [](cg::json& in) {
         in = cg::parse_json(R"({"lengths": [1.2, 1, 1, 0.8],
             "axes": [[0, 1, 0], [0, 0, 1], [0, 0, 1], [1, 0, 0]], "angles": [0, 20, 20, 0],
-            "target": [1, 2, 1.5], "method": "dls", "damping": 0.1, "iterations": 100})");
+            "target": [1, 2, 1.5], "method": "dls", "damping": 0.5, "iterations": 100})");
     });
 }
 BENCHMARK(BM_InverseKinematics_StepAndPicture3D)->Unit(benchmark::kMicrosecond);
