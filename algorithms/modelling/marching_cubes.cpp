@@ -377,9 +377,8 @@ const Spec& MarchingCubes::spec() {
                     {"cube", "t", "swap:one_minus_t",
                      "measured t from the wrong end of the edge (1 − t instead of t)"},
                     {"cube", "case", "keep", "kept the case of the cube before"},
-                    {"ambiguous", "joined_faces", "keep",
-                     "kept the face decisions of the cube before instead of averaging this "
-                     "cube's face corners"},
+                    {"ambiguous", "t", "swap:one_minus_t",
+                     "measured t from the wrong end of the edge in a cube with a saddle face"},
                 },
             .variants = {{"iso 0", "/iso", "0"}, {"iso 0.1", "/iso", "0.1"}},
         },
