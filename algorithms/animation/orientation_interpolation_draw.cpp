@@ -85,7 +85,7 @@ void OrientationInterpolation::draw(const State& s, Scene& scene) {
             scene.points3.push_back(
                 {c + s.p.m[k][0], m == 0 ? "k" + std::to_string(k) : "", {Role::Subject}, 4.0f});
         }
-        scene.labels3.push_back({c + dvec3(-0.6, -1.35, 0), kMethods[m].name, {role}});
+        scene.labels3.push_back({c + dvec3(-0.5, 1.25, 0), kMethods[m].name, {role}});
         if (nf == 0) continue;
         // The frames so far: triads, and the path of the x tip with a dot per frame drawn.
         dvec3 prev_tip{0};
@@ -111,7 +111,7 @@ void OrientationInterpolation::draw(const State& s, Scene& scene) {
     }
     if (nf > 0) {
         const Frame& f = s.frames.back();
-        scene.labels3.push_back({centre(1) + dvec3(-0.6, -1.65, 0),
+        scene.labels3.push_back({centre(1) + dvec3(-0.9, -1.3, 0),
                                  "det " + num(f.det, 3) + ", |MᵀM − I| " + num(f.orth_error, 2),
                                  {Role::Discarded}});
     }
@@ -126,12 +126,14 @@ void OrientationInterpolation::draw(const State& s, Scene& scene) {
     top *= 1.15;
     scene.polygons.push_back(
         {{{0, py}, {pw, py}, {pw, py + ph}, {0, py + ph}}, {Role::Construction, 1.0f}});
-    scene.labels.push_back({{0, py + ph + 0.35}, "angular speed (°/s)", {Role::Neutral}});
-    scene.labels.push_back({{pw + 0.15, py + ph - 0.1}, num(top / 1.15, 4) + "°/s", {Role::Neutral}});
+    scene.labels.push_back(
+        {{0, py + ph + 0.35}, "angular speed, top " + num(top, 4) + "°/s", {Role::Neutral}});
+    scene.labels.push_back({{0, py + ph + 0.9}, kMethods[0].name, {kMethods[0].role}});
+    scene.labels.push_back({{2.2, py + ph + 0.9}, kMethods[2].name, {kMethods[2].role}});
+    if (squad) scene.labels.push_back({{3.4, py + ph + 0.9}, kMethods[3].name, {kMethods[3].role}});
     const std::size_t pstride = std::max<std::size_t>(1, (nf + kMaxPlotPoints - 1) / kMaxPlotPoints);
-    for (int m : {0, 2, 3}) {
-        if (m == 3 && !squad) continue;
-        const int which = m == 3 ? 3 : m;
+    for (int which : {0, 2, 3}) {
+        if (which == 3 && !squad) continue;
         Polygon2 line{{}, {kMethods[which].role, 2.0f}, false, false};
         for (std::size_t k = 1; k < nf; k += pstride)
             line.points.push_back(
@@ -140,13 +142,7 @@ void OrientationInterpolation::draw(const State& s, Scene& scene) {
             line.points.push_back(
                 {pw * s.frames.back().t / T, py + ph * speed_of(s.frames.back(), which) / top});
         if (line.points.size() == 1) line.points.push_back(line.points[0] + dvec2(0.01, 0));
-        if (!line.points.empty()) {
-            scene.labels.push_back(
-                {line.points.back() + dvec2(0.1, m == 0 ? 0.25 : m == 2 ? 0.0 : -0.25),
-                 kMethods[which].name,
-                 {kMethods[which].role}});
-            scene.polygons.push_back(std::move(line));
-        }
+        if (!line.points.empty()) scene.polygons.push_back(std::move(line));
     }
     // 2D, lower: det M(t) of the matrix blend, 0 to 1.
     const double dh = 1.6;
