@@ -376,6 +376,9 @@ TEST_CASE("orientation-interpolation: 3,000 random inputs against long double an
             M3 m;
             for (int x = 0; x < 3; ++x)
                 for (int y = 0; y < 3; ++y) m.a[x][y] = (1 - u) * a.a[x][y] + u * b.a[x][y];
+            for (int x = 0; x < 3; ++x)
+                for (int y = 0; y < 3; ++y)
+                    REQUIRE(std::fabs(f.matrix[y][x] - double(m.a[x][y])) < 1e-15);
             REQUIRE(std::fabs(f.det - double(det(m))) < 1e-13);
             REQUIRE(std::fabs(f.orth_error - double(orth_error(m))) < 1e-13);
             // Euler: the angles lerped, then composed directly.
