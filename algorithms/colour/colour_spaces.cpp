@@ -801,13 +801,6 @@ namespace {
 const dvec3 kCone{-1.15, -0.5, 0};
 const dvec3 kCube{0.45, -0.5, -0.5};
 
-std::uint32_t rgba(const dvec3& c, std::uint32_t alpha = 0xff) {
-    auto ch = [](double v) {
-        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-    };
-    return ch(c.x) << 24 | ch(c.y) << 16 | ch(c.z) << 8 | alpha;
-}
-
 dvec3 plane(const dvec3& rgb) {
     return {rgb.x - (rgb.y + rgb.z) / 2, 0, -std::sqrt(3.0) / 2 * (rgb.y - rgb.z)};
 }
@@ -834,15 +827,15 @@ void draw_cone(Scene& scene, bool hsl, int sector) {
         const dvec3 mid = (kHues[i] + kHues[(i + 1) % 6]) / 2.0;
         const bool active = i == sector;
         scene.faces3.push_back({{centre, a, b},
-                                {Role::Neutral, active ? 2.5f : 1.0f, false, rgba(mid)},
+                                {Role::Neutral, active ? 2.5f : 1.0f, false, pack_rgba(mid)},
                                 active ? 0.85f : 0.45f,
                                 active,
                                 true});
         scene.faces3.push_back(
-            {{black, b, a}, {Role::Neutral, 1.0f, false, rgba(mid * 0.5)}, 0.12f, false, true});
+            {{black, b, a}, {Role::Neutral, 1.0f, false, pack_rgba(mid * 0.5)}, 0.12f, false, true});
         if (hsl)
             scene.faces3.push_back({{white, a, b},
-                                    {Role::Neutral, 1.0f, false, rgba(mid * 0.5 + 0.5)},
+                                    {Role::Neutral, 1.0f, false, pack_rgba(mid * 0.5 + 0.5)},
                                     0.12f,
                                     false,
                                     true});
@@ -850,7 +843,7 @@ void draw_cone(Scene& scene, bool hsl, int sector) {
         scene.segments3.push_back({black, a, "", {Role::Construction, 1.0f}, false});
         if (hsl) scene.segments3.push_back({white, a, "", {Role::Construction, 1.0f}, false});
         scene.points3.push_back(
-            {a, kHueNames[i], {Role::Neutral, 1.0f, false, rgba(kHues[i])}, 4.0f});
+            {a, kHueNames[i], {Role::Neutral, 1.0f, false, pack_rgba(kHues[i])}, 4.0f});
     }
     scene.segments3.push_back({black, white, "", {Role::Construction, 1.0f, true}, false});
     scene.labels3.push_back({black - dvec3(0, 0.12, 0),
@@ -868,7 +861,7 @@ void draw_cube(Scene& scene) {
                 scene.segments3.push_back(
                     {in_cube(p), in_cube(q), "", {Role::Construction, 1.0f}, false});
             }
-        scene.points3.push_back({in_cube(p), "", {Role::Neutral, 1.0f, false, rgba(p)}, 4.0f});
+        scene.points3.push_back({in_cube(p), "", {Role::Neutral, 1.0f, false, pack_rgba(p)}, 4.0f});
     }
     scene.segments3.push_back(
         {in_cube(dvec3(0)), in_cube(dvec3(1)), "", {Role::Construction, 1.0f, true}, false});
@@ -911,10 +904,10 @@ void ColourSpaces::draw(const State& s, Scene& scene) {
                       (k < s.done.colors.size() ? " → " + named(in.to, s.done.colors[k], 4) : "")
                 : "";
         scene.points3.push_back(
-            {in_cone(c, hsl), label, {Role::Active, 2.0f, false, rgba(c)}, big ? 10.0f : 5.0f});
+            {in_cone(c, hsl), label, {Role::Active, 2.0f, false, pack_rgba(c)}, big ? 10.0f : 5.0f});
         scene.points3.push_back({in_cube(c),
                                  big ? "RGB " + triple(c, 3) : "",
-                                 {Role::Active, 2.0f, false, rgba(c)},
+                                 {Role::Active, 2.0f, false, pack_rgba(c)},
                                  big ? 10.0f : 5.0f});
         if (!big) continue;
         const dvec3 p = in_cone(c, hsl);

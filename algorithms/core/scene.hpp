@@ -11,6 +11,8 @@
 // can offer dragging for any algorithm without knowing what the fields mean.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -40,6 +42,15 @@ struct Style {
     std::uint32_t rgba = 0;    // 0xRRGGBBAA overriding the role colour; 0 = use the role
     bool operator==(const Style&) const = default;
 };
+
+// 0xRRGGBBAA from a colour with channels in [0, 1] (clamped), rounded to the nearest byte: for
+// Style::rgba and PixelGrid2 cells.
+inline std::uint32_t pack_rgba(glm::dvec3 c, double alpha = 1.0) {
+    auto byte = [](double x) {
+        return static_cast<std::uint32_t>(std::lround(255 * std::clamp(x, 0.0, 1.0)));
+    };
+    return byte(c.x) << 24 | byte(c.y) << 16 | byte(c.z) << 8 | byte(alpha);
+}
 
 struct Point2 {
     glm::dvec2 p;

@@ -770,7 +770,7 @@ void Painters::draw(const State& s, Scene& scene) {
     colour.width = w, colour.height = h;
     colour.rgba.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
     for (std::size_t a = 0; a < s.ids.size(); ++a)
-        if (s.ids[a] >= 0) colour.rgba[a] = hsr::rgba_of(sc.polygons[static_cast<std::size_t>(s.ids[a])].color);
+        if (s.ids[a] >= 0) colour.rgba[a] = pack_rgba(sc.polygons[static_cast<std::size_t>(s.ids[a])].color);
     scene.grids.push_back(std::move(colour));
     scene.polygons.push_back({{{0, 0}, {W, 0}, {W, H}, {0, H}}, {Role::Construction, 1.0f}, true, false});
     scene.labels.push_back({{W / 2, H + 0.6}, "colour buffer", {Role::Neutral}});

@@ -202,11 +202,4 @@ std::vector<PixelSpan> polygon_spans(const ScreenPolygon& p, long long width, lo
     return spans;
 }
 
-std::uint32_t rgba_of(glm::dvec3 c) {
-    auto channel = [](double v) {
-        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-    };
-    return channel(c.r) << 24 | channel(c.g) << 16 | channel(c.b) << 8 | 0xffu;
-}
-
 }  // namespace cg::hsr

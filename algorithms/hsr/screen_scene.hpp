@@ -85,7 +85,4 @@ struct PixelSpan {
 // covers() accepts, and each lies in one triangle. Spans bottom to top, non-empty only.
 std::vector<PixelSpan> polygon_spans(const ScreenPolygon& p, long long width, long long height);
 
-// 0xRRGGBBAA of a colour in [0, 1]³, opaque.
-std::uint32_t rgba_of(glm::dvec3 color);
-
 }  // namespace cg::hsr

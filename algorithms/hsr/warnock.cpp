@@ -459,7 +459,7 @@ void Warnock::draw(const State& s, Scene& scene) {
     grid.width = w, grid.height = h;
     grid.rgba.assign(s.ids.size(), 0);
     for (std::size_t a = 0; a < s.ids.size(); ++a)
-        if (s.ids[a] >= 0) grid.rgba[a] = hsr::rgba_of(sc.polygons[static_cast<std::size_t>(s.ids[a])].color);
+        if (s.ids[a] >= 0) grid.rgba[a] = pack_rgba(sc.polygons[static_cast<std::size_t>(s.ids[a])].color);
         else if (s.ids[a] == -1) grid.rgba[a] = 0xe4e4e4ffu;  // decided: background
     scene.grids.push_back(std::move(grid));
 

@@ -365,10 +365,10 @@ void ZBuffer::draw(const State& s, Scene& scene) {
     depth.rgba.assign(r.ids.size(), 0);
     for (std::size_t a = 0; a < r.ids.size(); ++a) {
         if (r.ids[a] < 0) continue;
-        colour.rgba[a] = hsr::rgba_of(sc.polygons[static_cast<std::size_t>(r.ids[a])].color);
+        colour.rgba[a] = pack_rgba(sc.polygons[static_cast<std::size_t>(r.ids[a])].color);
         const double t = zmax > zmin ? std::clamp((r.depth[a] - zmin) / (zmax - zmin), 0.0, 1.0) : 0.5;
         const double grey = (40 + 190 * t) / 255;  // near dark, far light
-        depth.rgba[a] = hsr::rgba_of({grey, grey, grey});
+        depth.rgba[a] = pack_rgba({grey, grey, grey});
     }
     scene.grids.push_back(std::move(colour));
     scene.grids.push_back(std::move(depth));

@@ -1,10 +1,14 @@
 // The picture of marching cubes: the grid's box; on small grids every sample point, green inside
-// and grey outside; the triangles found so far in green, the last step's in orange; the current
+// and grey outside; the triangles found so far in green, lit by a fixed light (diffuse, either
+// side: 0.35 + 0.65 |n·l|) so the surface's shape reads, the last step's in orange; the current
 // cube's twelve edges in orange with its corners (numbered, with their values) and its crossings
 // as teal points, and a caption "case 1 = 00000001₂".
 #include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
 
 #include "core/format.hpp"
+#include "core/vec.hpp"
 #include "modelling/marching_cubes.hpp"
 
 namespace cg {
@@ -15,6 +19,8 @@ using MC = MarchingCubes;
 using glm::dvec3;
 
 constexpr std::size_t kOutlinedTriangles = 600;  // above this many, the faces go unoutlined
+const dvec3 kGreen{0x2c / 255.0, 0xa0 / 255.0, 0x2c / 255.0};  // Role::Kept's colour, lit
+const dvec3 kLight = unit(dvec3(0.35, 0.85, 0.4));          // from above, front and right
 
 std::string bits8(int index) {
     std::string b;
@@ -60,7 +66,12 @@ void MarchingCubes::draw(const State& s, Scene& scene) {
         f.points = {s.vertices[std::size_t(t[0])], s.vertices[std::size_t(t[1])],
                     s.vertices[std::size_t(t[2])]};
         f.style = {recent ? Role::Active : Role::Kept, 1.0f};
-        f.alpha = recent ? 0.7f : 0.45f;
+        f.alpha = 0.7f;
+        if (!recent) {
+            const dvec3 n = unit(glm::cross(f.points[1] - f.points[0], f.points[2] - f.points[0]));
+            f.style.rgba = pack_rgba(kGreen * (0.35 + 0.65 * std::fabs(glm::dot(n, kLight))));
+            f.alpha = 0.85f;
+        }
         f.outline = outline || recent;
         scene.faces3.push_back(std::move(f));
     }

@@ -156,11 +156,4 @@ std::pair<glm::dvec3, double> bounds(const Mesh& m) {
     return {(lo + hi) / 2.0, std::max(glm::length(hi - lo), 1e-9)};
 }
 
-std::uint32_t rgba(glm::dvec3 c) {
-    auto byte = [](double x) {
-        return static_cast<std::uint32_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255));
-    };
-    return byte(c.r) << 24 | byte(c.g) << 16 | byte(c.b) << 8 | 0xffu;
-}
-
 }  // namespace cg::npr

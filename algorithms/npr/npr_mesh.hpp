@@ -45,7 +45,4 @@ void validate(const Mesh& m);
 // The box around the mesh: its centre and the length of its diagonal (at least 1e-9).
 std::pair<glm::dvec3, double> bounds(const Mesh& m);
 
-// An RGB colour in [0, 1]³ as 0xRRGGBBAA with alpha 1.
-std::uint32_t rgba(glm::dvec3 c);
-
 }  // namespace cg::npr

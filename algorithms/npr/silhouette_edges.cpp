@@ -274,7 +274,7 @@ void SilhouetteEdges::draw(const State& s, Scene& scene) {
         } else if (s.r.front[k]) {
             const double d = std::max(0.0, glm::dot(unit(npr::newell(m.vertices, f)), l));
             const int b = ToonShading::band_of(d, in.thresholds);
-            face.style = {Role::Subject, 1.0f, false, npr::rgba(colours[static_cast<std::size_t>(b)])};
+            face.style = {Role::Subject, 1.0f, false, pack_rgba(colours[static_cast<std::size_t>(b)])};
             face.alpha = 1.0f;
         } else {
             face.style = {Role::Subject, 1.0f};

@@ -236,7 +236,7 @@ void ToonShading::draw(const State& s, Scene& scene) {
         face.two_sided = false;
         if (static_cast<int>(k) < shaded) {
             const int b = s.r.band[k];
-            face.style = {Role::Subject, 1.0f, false, npr::rgba(colours[static_cast<std::size_t>(b)])};
+            face.style = {Role::Subject, 1.0f, false, pack_rgba(colours[static_cast<std::size_t>(b)])};
             face.alpha = 1.0f;
             face.outline = small;
         } else {
@@ -272,7 +272,7 @@ void ToonShading::draw(const State& s, Scene& scene) {
         Face3 cellf;
         cellf.points = {{x0 + u0 * w, y, mid.z}, {x0 + u1 * w, y, mid.z},
                         {x0 + u1 * w, y + h, mid.z}, {x0 + u0 * w, y + h, mid.z}};
-        cellf.style = {Role::Subject, 1.0f, false, npr::rgba(colours[b])};
+        cellf.style = {Role::Subject, 1.0f, false, pack_rgba(colours[b])};
         cellf.alpha = 1.0f;
         scene.faces3.push_back(std::move(cellf));
         if (b > 0)

@@ -528,13 +528,6 @@ ScanTriangle::Result ScanTriangle::result(const State& s) {
 
 namespace {
 
-std::uint32_t rgba_of(dvec3 c) {
-    auto channel = [](double v) {
-        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-    };
-    return channel(c.r) << 24 | channel(c.g) << 16 | channel(c.b) << 8 | 0xffu;
-}
-
 }  // namespace
 
 void ScanTriangle::draw(const State& s, Scene& scene) {
@@ -550,7 +543,7 @@ void ScanTriangle::draw(const State& s, Scene& scene) {
     for (std::size_t k = 0; k < r.pixels.size(); ++k) {
         const glm::ivec2 p = r.pixels[k];
         grid.rgba[static_cast<std::size_t>(p.y) * w + p.x] =
-            shaded ? rgba_of(r.colors[k]) : PixelGrid2::kRoleColour;
+            shaded ? pack_rgba(r.colors[k]) : PixelGrid2::kRoleColour;
     }
     scene.grids.push_back(std::move(grid));
     const double W = w, H = h;

@@ -270,7 +270,7 @@ void RayTracer::advance(State& s) {
             if (in.granularity == Granularity::Rows) {
                 const int j = static_cast<int>(s.next_pixel / W);
                 for (int i = 0; i < W; ++i)
-                    s.image.set(i, j, rt::to_rgba8(rt::pixel_color(sc, *s.prepared, i, j, s.rays)));
+                    s.image.set(i, j, pack_rgba(rt::pixel_color(sc, *s.prepared, i, j, s.rays)));
                 s.last_i = -1, s.last_j = j;
                 s.next_pixel += W;
                 s.last_event = Event::Row;
@@ -278,7 +278,7 @@ void RayTracer::advance(State& s) {
                 const int i = static_cast<int>(s.next_pixel % W),
                           j = static_cast<int>(s.next_pixel / W);
                 s.last_color = rt::pixel_color(sc, *s.prepared, i, j, s.rays);
-                s.image.set(i, j, rt::to_rgba8(s.last_color));
+                s.image.set(i, j, pack_rgba(s.last_color));
                 s.last_i = i, s.last_j = j;
                 ++s.next_pixel;
                 s.last_event = Event::Pixel;
@@ -1030,13 +1030,13 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
                 info.narration = "The pixel's colour is the filtered average of its " +
                                  std::to_string(s.samples.size()) + " samples: " + num(s.sum, 4) +
                                  " / " + num(s.sum_w, 4) + " = " + num(s.pixel_color, 4) +
-                                 ", stored as " + rgb8_text(rt::to_rgba8(s.pixel_color)) + ".";
+                                 ", stored as " + rgb8_text(pack_rgba(s.pixel_color)) + ".";
                 info.line = 13;
                 break;
             }
             info.narration = "The primary ray returns " + num(s.pixel_color, 4) +
                              ": the pixel's colour, stored as " +
-                             rgb8_text(rt::to_rgba8(s.pixel_color)) +
+                             rgb8_text(pack_rgba(s.pixel_color)) +
                              " (clamped to [0, 1], × 255).";
             break;
         default:
@@ -1049,10 +1049,6 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
 // ---- [draw] ---------------------------------------------------------------------------------
 
 namespace {
-
-std::uint32_t rgba_of(const Color& c, double alpha) {
-    return (rt::to_rgba8(c) & 0xffffff00u) | static_cast<std::uint32_t>(std::lround(255 * alpha));
-}
 
 // The scene's size: for the picture's extent and for cutting unbounded surfaces.
 double scene_extent(const rt::Scene& sc) {
@@ -1074,7 +1070,7 @@ void draw_objects(const rt::Scene& sc, double extent, Scene& scene) {
         const double r = std::min(1.0, std::max({m.kr.x, m.kr.y, m.kr.z}));
         look = (1 - t) * look + t * Color(0.6, 0.8, 1.0);
         look = (1 - r) * look + r * Color(0.7);
-        const Style style{Role::Subject, 1.0f, false, rgba_of(look, 1)};
+        const Style style{Role::Subject, 1.0f, false, pack_rgba(look, 1)};
         switch (o.kind) {
             case rt::ObjectKind::Quadric: {
                 const double L = largest_param(o.quadric);
@@ -1343,7 +1339,7 @@ void RayTracer::draw(const State& s, Scene& scene) {
         if (!in.explicit_ray) {
             hi = s.pixel_i, hj = s.pixel_j;
             if (s.phase == Phase::Done)
-                grid.rgba[static_cast<std::size_t>(hj) * W + hi] = rt::to_rgba8(s.pixel_color);
+                grid.rgba[static_cast<std::size_t>(hj) * W + hi] = pack_rgba(s.pixel_color);
             scene.handles.push_back({{s.pixel_i + 0.5, s.pixel_j + 0.5},
                                      "pixel",
                                      "/stepping/pixel/0",

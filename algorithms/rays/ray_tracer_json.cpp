@@ -132,7 +132,7 @@ struct JsonIo<RayTracer> {
         const bool hit = primary.hit.object >= 0;
         j["pixel"] = r.explicit_ray ? json(nullptr) : json{r.pixel_i, r.pixel_j};
         j["color"] = to_json(r.color);
-        j["rgb8"] = rgb8(rt::to_rgba8(r.color));
+        j["rgb8"] = rgb8(pack_rgba(r.color));
         j["hit"] = hit;
         j["t"] = hit ? json(primary.hit.t) : json(nullptr);
         j["point"] = hit ? to_json(primary.hit.point) : json(nullptr);

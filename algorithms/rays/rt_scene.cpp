@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/format.hpp"
+#include "core/scene.hpp"
 #include "core/step.hpp"
 #include "rays/rt_csg.hpp"
 
@@ -997,13 +998,6 @@ Color pixel_color(const Scene& s, const Prepared& p, int i, int j, RayCounts& co
     return sum / weights;
 }
 
-std::uint32_t to_rgba8(Color c) {
-    auto byte = [](double x) {
-        return static_cast<std::uint32_t>(std::lround(255 * std::clamp(x, 0.0, 1.0)));
-    };
-    return byte(c.x) << 24 | byte(c.y) << 16 | byte(c.z) << 8 | 0xffu;
-}
-
 namespace {
 // Rows k, k + step, k + 2 step, ... of the image. Flattened, so the tracer's calls inline into
 // the loop as they do into a state machine's run_to_end.
@@ -1012,7 +1006,7 @@ namespace {
     for (int j = k; j < img.height; j += step)
         for (int i = 0; i < img.width; ++i)
             img.rgba[static_cast<std::size_t>(j) * img.width + i] =
-                to_rgba8(pixel_color(s, p, i, j, counts));
+                pack_rgba(pixel_color(s, p, i, j, counts));
 }
 }  // namespace
 

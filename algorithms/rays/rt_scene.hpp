@@ -418,7 +418,6 @@ Color trace(const Scene& s, const Prepared& p, glm::dvec3 origin, glm::dvec3 dir
             RayCounts& counts, const RayDifferential* diff = nullptr, Rng* rng = nullptr,
             double time = 0);
 Color pixel_color(const Scene& s, const Prepared& p, int i, int j, RayCounts& counts);
-std::uint32_t to_rgba8(Color c);  // 0xRRGGBBAA, alpha 255
 
 struct Image {
     int width = 0, height = 0;

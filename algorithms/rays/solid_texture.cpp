@@ -316,7 +316,7 @@ void SolidTextureAlgo::draw(const State& s, Scene& scene) {
         scene.points3.push_back({in.points[i],
                                  "",
                                  {Role::Subject, 1.0f, false,
-                                  known ? texdraw::rgba(s.r.samples[i].color) : 0x80808060u},
+                                  known ? pack_rgba(s.r.samples[i].color) : 0x80808060u},
                                  known ? 6.0f : 3.0f});
         extent = std::max(extent, glm::length(in.points[i]));
     }

@@ -13,13 +13,6 @@ namespace cg::texdraw {
 using glm::dvec2;
 using glm::dvec3;
 
-std::uint32_t rgba(dvec3 c, double alpha) {
-    auto byte = [](double x) {
-        return static_cast<std::uint32_t>(std::lround(255 * std::clamp(x, 0.0, 1.0)));
-    };
-    return byte(c.x) << 24 | byte(c.y) << 16 | byte(c.z) << 8 | byte(alpha);
-}
-
 int add_image(const TextureImage& im, Scene& scene, const std::string& label) {
     constexpr int kMaxShown = 128;  // cells on a side: a big image is shown every k-th texel
     const int k = std::max(1, (std::max(im.width, im.height) + kMaxShown - 1) / kMaxShown);
@@ -30,7 +23,7 @@ int add_image(const TextureImage& im, Scene& scene, const std::string& label) {
     g.rgba.resize(static_cast<std::size_t>(g.width) * g.height);
     for (int j = 0; j < g.height; ++j)
         for (int i = 0; i < g.width; ++i)
-            g.rgba[static_cast<std::size_t>(j) * g.width + i] = rgba(im.at(i * k, j * k));
+            g.rgba[static_cast<std::size_t>(j) * g.width + i] = pack_rgba(im.at(i * k, j * k));
     scene.grids.push_back(std::move(g));
     std::string text = std::to_string(im.width) + " × " + std::to_string(im.height) + " texels";
     if (!label.empty()) text = label + ": " + text;
@@ -99,7 +92,7 @@ void add_surface(const PreparedUv& p, const UvSurface& s, dvec2 lo, dvec2 hi, in
                     const dvec3 P = (c0.first + c1.first + c2.first) / 3.0;
                     scene.faces3.push_back(
                         {{c0.first + offset, c1.first + offset, c2.first + offset},
-                         {Role::Subject, 1.0f, false, rgba(color(uv, P), 1)},
+                         {Role::Subject, 1.0f, false, pack_rgba(color(uv, P))},
                          alpha,
                          false,
                          true});
@@ -122,7 +115,7 @@ void add_surface(const PreparedUv& p, const UvSurface& s, dvec2 lo, dvec2 hi, in
             const dvec3 P = 0.25 * (at(i, j) + at(i + 1, j) + at(i + 1, j + 1) + at(i, j + 1));
             scene.faces3.push_back({{at(i, j) + offset, at(i + 1, j) + offset,
                                      at(i + 1, j + 1) + offset, at(i, j + 1) + offset},
-                                    {Role::Subject, 1.0f, false, rgba(color(mid, P), 1)},
+                                    {Role::Subject, 1.0f, false, pack_rgba(color(mid, P))},
                                     alpha,
                                     false,
                                     true});

@@ -13,8 +13,6 @@
 
 namespace cg::texdraw {
 
-std::uint32_t rgba(glm::dvec3 c, double alpha = 1.0);  // clamped to [0, 1]
-
 // The image as a grid of cells, one per texel (a large image every k-th texel, k returned:
 // texel (i, j) is then at cell (i/k, j/k)).
 int add_image(const TextureImage& im, Scene& scene, const std::string& label);

@@ -1050,13 +1050,6 @@ void Shading::narrate(const State& s, StepInfo& info) {
 
 namespace {
 
-std::uint32_t rgba_of(Color c) {
-    auto channel = [](double v) {
-        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-    };
-    return channel(c.r) << 24 | channel(c.g) << 16 | channel(c.b) << 8 | 0xffu;
-}
-
 // What the eye reads: the mean of the clamped channels.
 double intensity(Color c) {
     return (std::clamp(c.r, 0.0, 1.0) + std::clamp(c.g, 0.0, 1.0) + std::clamp(c.b, 0.0, 1.0)) / 3;
@@ -1115,7 +1108,7 @@ void fill_comparison(const Shading::State& s, Shading::Comparison& c) {
             for (int i = 0; i < r.width; ++i) {
                 const Sample& p = r.at(i, j);
                 rgba[static_cast<std::size_t>(j) * r.width + i] =
-                    p.triangle < 0 ? kBackground : rgba_of(p.color);
+                    p.triangle < 0 ? kBackground : pack_rgba(p.color);
             }
         auto& profile = c.profile[static_cast<int>(m)];
         for (int i = 0; i < r.width; ++i) {
@@ -1228,7 +1221,7 @@ void Shading::draw(const State& s, Scene& scene) {
         for (int i = 0; i < w; ++i) {
             const Sample& p = s.image.at(i, j);
             grid.rgba[static_cast<std::size_t>(j) * w + i] =
-                p.triangle < 0 ? kBackground : rgba_of(p.color);
+                p.triangle < 0 ? kBackground : pack_rgba(p.color);
             if (j == s.pixel_j && p.triangle >= 0) profile[i] = intensity(p.color);
         }
     grid.grid_lines = w * h <= 16 * 16;  // cell borders for the small (exam) images

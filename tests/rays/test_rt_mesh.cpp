@@ -426,6 +426,6 @@ TEST_CASE("mesh objects: the ray tracer shows the hierarchy's build as its first
     while (!cg::RayTracer::done(st)) cg::RayTracer::step(st, nullptr);
     rt::RayCounts counts;
     const rt::Prepared p = rt::prepare(s);
-    CHECK(rt::to_rgba8(cg::RayTracer::result(st).color) ==
-          rt::to_rgba8(rt::pixel_color(s, p, 24, 18, counts)));
+    CHECK(cg::pack_rgba(cg::RayTracer::result(st).color) ==
+          cg::pack_rgba(rt::pixel_color(s, p, 24, 18, counts)));
 }
