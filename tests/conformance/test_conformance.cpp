@@ -8,6 +8,7 @@
 #include "core/timeline.hpp"
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
+#include "support/sweep.hpp"
 
 namespace {
 
@@ -27,7 +28,7 @@ std::vector<NamedInput> inputs_of(const cg::Algorithm& a) {
     if (const cg::Lesson* l = lessons.for_algorithm(a.spec->id))
         for (const auto& p : l->presets) inputs.push_back({"preset " + p.name, p.input});
     if (cg::has_exam(a))
-        for (std::uint64_t seed = 0; seed < 40; ++seed)
+        for (std::uint64_t seed = 0; seed < cg::test::sweep(40); ++seed)
             inputs.push_back({"exam seed " + std::to_string(seed), a.exam_input(seed)});
     return inputs;
 }

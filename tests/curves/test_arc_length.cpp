@@ -12,6 +12,7 @@
 #include "curves/bezier.hpp"
 #include "io/exam.hpp"
 #include "io/registry.hpp"
+#include "support/sweep.hpp"
 
 using cg::ArcLength;
 using glm::dvec3;
@@ -92,7 +93,7 @@ TEST_CASE("arc-length: the integral agrees with the closed form for 500 quadrati
 
 TEST_CASE("arc-length: tables increase and converge to the integral like 1/N²",
           "[curves][arc-length]") {
-    for (int trial = 0; trial < 200; ++trial) {
+    for (int trial = 0; trial < int(cg::test::sweep(200)); ++trial) {
         std::mt19937_64 rng(trial);
         const int n = 2 + trial % 4, dim = trial % 2 ? 3 : 2;
         const auto p = cg::test::random_points(rng, n + 1, dim);
@@ -147,7 +148,7 @@ TEST_CASE("arc-length: inversion is exact on uniformly parameterised lines",
 
 TEST_CASE("arc-length: on curves the inverse is within the table's error bound",
           "[curves][arc-length]") {
-    for (int trial = 0; trial < 100; ++trial) {
+    for (int trial = 0; trial < int(cg::test::sweep(100)); ++trial) {
         std::mt19937_64 rng(1000 + trial);
         const int n = 2 + trial % 3, samples = 10 + 10 * (trial % 4);
         const auto p = cg::test::random_points(rng, n + 1, 2);

@@ -12,6 +12,7 @@
 #include "fuzz/oracles.hpp"
 #include "core/format.hpp"
 #include "io/lesson.hpp"
+#include "support/sweep.hpp"
 
 using cg::json;
 
@@ -108,7 +109,7 @@ TEST_CASE("json mutator: mutants of every algorithm's seeds mostly pass validati
         std::uint64_t seed = 1;
         for (const json& input : seeds(a)) {
             const std::string text = input.dump();
-            for (int k = 0; k < 20; ++k) {
+            for (std::size_t k = 0; k < cg::test::sweep(20); ++k) {
                 bool ok = false;
                 for (int attempt = 0; attempt < 4 && !ok; ++attempt)
                     ok = accepted(a, *cg::fuzz::mutate_json(text, seed++));
@@ -130,7 +131,7 @@ TEST_CASE("fuzz oracles: every algorithm's seeds and their mutants are finite, r
         std::uint64_t seed = 1;
         for (const json& input : seeds(a)) {
             std::vector<json> inputs{input};
-            for (int k = 0; k < 5; ++k) {
+            for (std::size_t k = 0; k < cg::test::sweep(5); ++k) {
                 try {
                     inputs.push_back(cg::parse_json(*cg::fuzz::mutate_json(input.dump(), seed++)));
                 } catch (const cg::InputError&) {
