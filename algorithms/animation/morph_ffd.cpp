@@ -179,7 +179,13 @@ void MorphFfd::validate(const Input& in) {
     if (in.shape.size() > std::size_t(kMaxPoints))
         throw InputError("shape", "has " + std::to_string(in.shape.size()) + " points; at most " +
                                       std::to_string(kMaxPoints));
-    for (std::size_t q = 0; q < in.shape.size(); ++q) check_point(in.shape[q], item("shape", q));
+    // The field's name is built only for a point that fails (a string per point would cost
+    // as much as deforming it).
+    for (std::size_t q = 0; q < in.shape.size(); ++q) {
+        const glm::dvec2 p = in.shape[q];
+        if (!(std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate))
+            check_point(p, item("shape", q));
+    }
 }
 
 // ---- [state machine] ------------------------------------------------------------------------
