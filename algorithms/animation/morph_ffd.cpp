@@ -104,12 +104,12 @@ const Spec& MorphFfd::spec() {
         "Free-form deformation: a Bernstein lattice bends the space around a shape",
         "Animation",
         {
-            "lay the lattice P_ij = X_0 + (i/l) S + (j/m) T over the box",
+            "lay the lattice P_ij = X_0 + (i/l) S + (j/m) T over the box  (in 3D P_ijk, + (k/n) U)",
             "move control points:  P_ij ← P_ij + Δ  (or ← a new position)",
             "for every point X of the shape:",
-            "  (s, t) ← ((X − X_0)·S/|S|², (X − X_0)·T/|T|²)",
-            "  if s or t outside [0, 1]: X stays where it is",
-            "  X' ← Σ_i Σ_j B_i^l(s) B_j^m(t) P_ij,   B_i^l(s) = C(l,i) s^i (1−s)^(l−i)",
+            "  (s, t) ← ((X − X_0)·S/|S|², (X − X_0)·T/|T|²)  (in 3D also u ← (X − X_0)·U/|U|²)",
+            "  if s or t (or u) outside [0, 1]: X stays where it is",
+            "  X' ← Σ_i Σ_j B_i^l(s) B_j^m(t) P_ij  (in 3D Σ_k B_k^n(u) too),  B_i^l(s) = C(l,i) s^i (1−s)^(l−i)",
             "report the deformed shape",
         },
         {
@@ -152,6 +152,7 @@ std::string item(const char* list, std::size_t i, const char* field = nullptr) {
 }  // namespace
 
 void MorphFfd::validate(const Input& in) {
+    if (in.spatial()) return validate3(in);
     check_point(in.box_min, "box.min");
     check_point(in.box_max, "box.max");
     for (int c = 0; c < 2; ++c)
@@ -198,6 +199,13 @@ MorphFfd::State MorphFfd::start(const Input& in) {
 MorphFfd::State MorphFfd::begin(Shared<Input> shared) {
     State s;
     s.in = std::move(shared);
+    if (s.in->spatial()) {
+        const std::size_t n = s.in->shape3.size();
+        s.local3.reserve(n);
+        s.deformed3.reserve(n);
+        s.inside.reserve(n);
+        return s;
+    }
     const std::size_t n = s.in->shape.size();
     s.local.reserve(n);
     s.deformed.reserve(n);
@@ -207,6 +215,7 @@ MorphFfd::State MorphFfd::begin(Shared<Input> shared) {
 
 void MorphFfd::take_step(State& s) {
     const Input& in = *s.in;
+    if (in.spatial()) return take_step3(s);
     switch (s.phase) {
         case Phase::Lattice:
             s.lattice = Shared<V2>(lattice(in));
@@ -373,6 +382,7 @@ void narrate_summary(const State& s, StepInfo& info) {
 void MorphFfd::narrate(const State& s, StepInfo& info) {
     info.math.clear();
     info.vars.clear();
+    if (s.in->spatial()) return narrate3(s, info);
     switch (s.last) {
         case Phase::Lattice: narrate_lattice(s, info); break;
         case Phase::Point: narrate_point(s, info); break;
@@ -384,6 +394,14 @@ void MorphFfd::narrate(const State& s, StepInfo& info) {
 
 MorphFfd::Result MorphFfd::result(const State& s) {
     Result r;
+    if (s.in->spatial()) {
+        r.lattice3 = *s.lattice3;
+        r.local3 = s.local3;
+        r.deformed3 = s.deformed3;
+        r.inside = s.inside;
+        r.inside_count = s.inside_count;
+        return r;
+    }
     r.lattice = *s.lattice;
     r.local = s.local;
     r.inside = s.inside;
@@ -394,6 +412,7 @@ MorphFfd::Result MorphFfd::result(const State& s) {
 
 MorphFfd::Result MorphFfd::compute(const Input& in) {
     validate(in);
+    if (in.spatial()) return compute3(in);
     Result r;
     r.lattice = lattice(in);
     const std::size_t n = in.shape.size();

@@ -1,5 +1,5 @@
-// Free-form deformation (Sederberg and Parry), in the plane: the space around a shape is bent,
-// and the shape goes with it
+// Free-form deformation (Sederberg and Parry), in the plane and in space: the space around a
+// shape is bent, and the shape goes with it
 //
 // The course (animation, deformations): a free-form deformation changes the space around an
 // object with a nonlinear transformation, instead of moving the object's vertices one by one.
@@ -16,7 +16,14 @@
 //
 //   X(s, t) = Σ_{i=0..l} Σ_{j=0..m} B_i^l(s) B_j^m(t) P_ij,   B_i^l(s) = C(l, i) s^i (1 − s)^(l−i)
 //
-// the n = 0 case of the trivariate Sederberg–Parry formula Σ_i Σ_j Σ_k B_i^l B_j^m B_k^n P_ijk.
+// the n = 0 case of the trivariate Sederberg–Parry formula. In space (a 3D box, n ≥ 1) the
+// lattice has (l+1)(m+1)(n+1) points P_ijk = X_0 + (i/l) S + (j/m) T + (k/n) U, U = (0, 0, z
+// extent), the third local coordinate is u = (X − X_0)·U / |U|², and
+//
+//   X(s, t, u) = Σ_i Σ_j Σ_k B_i^l(s) B_j^m(t) B_k^n(u) P_ijk.
+//
+// The planar case keeps its own 2D fields and code (the *3 fields and functions are the spatial
+// one), so a planar lattice computes exactly what it always did.
 // Because Σ_i B_i^l(s) (i/l) = s (linear precision), the undeformed lattice maps every point to
 // itself, and a lattice moved by an affine map moves every point inside by that same map.
 //
@@ -30,12 +37,14 @@
 // (two moves of one point add up, or the later "to" wins). Refused: a degree outside 1..kMaxDegree,
 // a box with max ≤ min on an axis, coordinates not finite or above 1e6 in size, a move naming a
 // control point outside the lattice, no shape points, more than kMaxPoints points or kMaxMoves
-// moves.
+// moves; in space also n outside 1..kMaxDegree (at most 9 × 9 × 9 control points), a flat box
+// (zero depth), an edge naming a point the shape does not have, more than kMaxEdges edges.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
 
@@ -58,12 +67,29 @@ struct MorphFfd {
         bool operator==(const Move&) const = default;
     };
 
+    static constexpr int kMaxEdges = 10000;
+
+    struct Move3 {
+        int i = 0, j = 0, k = 0;   // the control point P_ijk
+        glm::dvec3 value{0, 0, 0};  // the displacement, or the new position when `absolute`
+        bool absolute = false;
+        bool operator==(const Move3&) const = default;
+    };
+
     struct Input {
         glm::dvec2 box_min{0, 0}, box_max{1, 1};
         int l = 2, m = 2;  // the lattice's degrees along x (s) and y (t)
         std::vector<Move> moves;
         std::vector<glm::dvec2> shape;  // a polyline (a polygon when closed)
         bool closed = false;
+        // In space: n ≥ 1 (the degree along z, u) makes the lattice spatial, and then the box,
+        // moves and shape below replace the planar ones above (which are ignored).
+        int n = 0;
+        glm::dvec3 box3_min{0, 0, 0}, box3_max{1, 1, 1};
+        std::vector<Move3> moves3;
+        std::vector<glm::dvec3> shape3;  // a polyline (closed: a polygon), or a wireframe:
+        std::vector<std::array<int, 2>> edges;  // when given, the shape's edges (index pairs)
+        bool spatial() const { return n > 0; }
         bool operator==(const Input&) const = default;
     };
 
@@ -76,6 +102,8 @@ struct MorphFfd {
         std::vector<char> inside;          // 1 when 0 ≤ s, t ≤ 1
         std::vector<glm::dvec2> deformed;  // X(s, t), or the point itself when outside
         int inside_count = 0;
+        // In space, instead of the three above: P_ijk at (i·(m+1) + j)·(n+1) + k, (s, t, u), X'.
+        std::vector<glm::dvec3> lattice3, local3, deformed3;
         bool operator==(const Result&) const = default;
     };
 
@@ -90,6 +118,8 @@ struct MorphFfd {
         std::vector<glm::dvec2> local, deformed;
         std::vector<char> inside;
         int inside_count = 0;
+        Shared<std::vector<glm::dvec3>> lattice3;  // in space
+        std::vector<glm::dvec3> local3, deformed3;
         bool operator==(const State&) const = default;
     };
 
@@ -102,7 +132,8 @@ struct MorphFfd {
     static Result result(const State& s);
     static void draw(const State& s, Scene& scene);
     static std::size_t bytes(const State& s) {
-        return heap_bytes(s.local) + heap_bytes(s.deformed) + heap_bytes(s.inside);
+        return heap_bytes(s.local) + heap_bytes(s.deformed) + heap_bytes(s.inside) +
+               heap_bytes(s.local3) + heap_bytes(s.deformed3);
     }
 
     static Input exam_input(Rng& rng);
@@ -126,9 +157,27 @@ struct MorphFfd {
     static glm::dvec2 deform(const Input& in, const std::vector<glm::dvec2>& lattice,
                              glm::dvec2 x);
 
+    // The same in space (n ≥ 1): P_ijk at (i·(m+1) + j)·(n+1) + k.
+    static std::vector<glm::dvec3> lattice3(const Input& in);
+    static glm::dvec3 rest3(const Input& in, int i, int j, int k);
+    static glm::dvec3 local3(const Input& in, glm::dvec3 x);  // (s, t, u)
+    static bool inside3(glm::dvec3 stu) {
+        return stu.x >= 0 && stu.x <= 1 && stu.y >= 0 && stu.y <= 1 && stu.z >= 0 && stu.z <= 1;
+    }
+    static glm::dvec3 blend3(const Input& in, const std::vector<glm::dvec3>& lattice,
+                             glm::dvec3 stu);
+    static glm::dvec3 deform3(const Input& in, const std::vector<glm::dvec3>& lattice,
+                              glm::dvec3 x);
+    static void draw3(const State& s, Scene& scene);
+
   private:
     static void take_step(State& s);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);
+    // The spatial case's own parts (morph_ffd_space.cpp).
+    static void validate3(const Input& in);
+    static void take_step3(State& s);
+    [[gnu::cold]] static void narrate3(const State& s, StepInfo& info);
+    static Result compute3(const Input& in);
 };
 
 }  // namespace cg

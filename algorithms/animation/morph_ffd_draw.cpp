@@ -24,6 +24,7 @@ constexpr int kEdgeSamples = 12;    // samples along each edge of the deformed s
 
 void MorphFfd::draw(const State& s, Scene& scene) {
     const Input& in = *s.in;
+    if (in.spatial()) return draw3(s, scene);  // morph_ffd_draw3.cpp
     const glm::dvec2 lo = in.box_min, hi = in.box_max;
     scene.polygons.push_back(
         {{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, {Role::Window, 1.5f}, true, false});
