@@ -195,7 +195,7 @@ TEST_CASE("image-morph: the exam-style example worked by hand", "[animation][ima
     REQUIRE(res.frames.size() == 3);
     // α = ½: the line sits half way, x = 2.5. X = (2.5, 1.5): u = (0, 1)·(0, 3)/9 = 1/3,
     // v = (0, 1)·(−3, 0)/3 = 0; X'_A = (1.5, 0.5) + ⅓ (0, 3) = (1.5, 1.5), X'_B = (3.5, 1.5).
-    const auto& f = res.focus;
+    const auto f = ImageMorph::focus(ImageMorph::resolve(worked()), res.frames[1], 2, 1);
     CHECK(f.alpha == 0.5);
     REQUIRE(f.a.terms.size() == 1);
     CHECK(f.a.terms[0].u == Approx(1.0 / 3).margin(1e-15));
@@ -223,6 +223,8 @@ TEST_CASE("image-morph: the exam-style example worked by hand", "[animation][ima
     // The ends are the images themselves, bit for bit.
     CHECK(res.frames[0].morph == worked().image_a);
     CHECK(res.frames[2].morph == worked().image_b);
+    CHECK(res.focus.alpha == 1);  // the reported pixel is in the last frame
+    CHECK(res.focus.morph == 0);
     // Per row |0 − 0| + |0 − 100| + |150 − 0| + |50 − 50| over 4 pixels; the ends are 0.
     CHECK(ImageMorph::difference(res.frames[1]) == Approx(62.5).margin(1e-9));
     CHECK(ImageMorph::difference(res.frames[0]) == 0);
