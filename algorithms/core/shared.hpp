@@ -15,7 +15,10 @@ namespace cg {
 template <class T>
 class Shared {
 public:
-    Shared() : p_(empty()) {}
+    // A default Shared points at the type's one default value without owning it (shared_ptr's
+    // aliasing constructor with no owner): no control block, so making, copying and replacing
+    // it touch no reference count. `State s; s.in = std::move(in);` costs only the move.
+    Shared() : p_(std::shared_ptr<const T>(), &empty()) {}
     explicit Shared(T value) : p_(std::make_shared<const T>(std::move(value))) {}
 
     const T& operator*() const { return *p_; }
@@ -26,8 +29,8 @@ public:
 
 private:
     // One default value per type, so that default-constructed states do not allocate.
-    static const std::shared_ptr<const T>& empty() {
-        static const std::shared_ptr<const T> e = std::make_shared<const T>();
+    static const T& empty() {
+        static const T e{};
         return e;
     }
     std::shared_ptr<const T> p_;

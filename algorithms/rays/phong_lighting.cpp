@@ -259,7 +259,8 @@ void specular_term(const PhongLighting::Input& in, dvec3 n, dvec3 v, PhongLighti
 
 void PhongLighting::advance(State& s) {
     s.last = s.phase;
-    const int n_lights = static_cast<int>(s.in->lights.size());
+    // The light count is read only where a phase chooses what follows (a size is a division).
+    const auto n_lights = [&s] { return static_cast<int>(s.in->lights.size()); };
     Result& o = s.out;
     switch (s.phase) {
         case Phase::View:  // The unit normal and the view vector
@@ -271,7 +272,7 @@ void PhongLighting::advance(State& s) {
             return;
         case Phase::Ambient:  // The ambient term
             o.ambient = s.in->material.ka * s.in->ambient;
-            s.phase = n_lights > 0 ? Phase::LightDir : Phase::Total;
+            s.phase = n_lights() > 0 ? Phase::LightDir : Phase::Total;
             return;
         case Phase::LightDir:  // The next light: its direction and attenuation
             ++s.k;
@@ -287,7 +288,7 @@ void PhongLighting::advance(State& s) {
         case Phase::Specular:  // The highlight
             specular_term(*s.in, o.n, o.v, o.lights.back(), s.in->lights[s.k]);
             o.specular += o.lights.back().specular;
-            s.phase = s.k + 1 < n_lights ? Phase::LightDir : Phase::Total;
+            s.phase = s.k + 1 < n_lights() ? Phase::LightDir : Phase::Total;
             return;
         case Phase::Total:  // The sum
             o.intensity = o.ambient + o.diffuse + o.specular;
