@@ -416,9 +416,13 @@ void Quaternion::validate(const Input& in) {
 
 Quaternion::State Quaternion::start(const Input& in) {
     validate(in);
+    return begin(Shared<Input>(in));
+}
+
+Quaternion::State Quaternion::begin(Shared<Input> in) {
     State s;
-    s.in = Shared<Input>(in);
-    s.phase = s.last = first_phase(in.op);
+    s.phase = s.last = first_phase(in->op);
+    s.in = std::move(in);
     return s;
 }
 

@@ -150,6 +150,7 @@ struct Quaternion {
     static Phase first_phase(Op op);  // where a run of `op` starts
     static void validate(const Input& in);
     static State start(const Input& in);
+    static State begin(Shared<Input> in);  // start() for an input already validated
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);
