@@ -112,7 +112,8 @@ std::optional<std::string> take_pending_checkpoint() { return owned(js_take_pend
 void publish(const viewer::Session& s, int frames) {
     json widgets = json::object();
     for (const auto& [name, w] : s.widgets)
-        widgets[name] = {w.box.min.x, w.box.min.y, w.box.max.x, w.box.max.y, w.visible};
+        widgets[name] = {w.box.min.x,    w.box.min.y,    w.box.max.x,    w.box.max.y, w.visible,
+                         w.window.min.x, w.window.min.y, w.window.max.x, w.window.max.y};
     const json state = {{"frames", frames},
                         {"algorithm", s.algorithm ? s.algorithm->spec->id : ""},
                         {"step", s.index()},

@@ -38,7 +38,9 @@ std::optional<std::string> fragment_json();
 std::optional<std::string> take_pending_checkpoint();
 
 // window.cgsandbox = {frames, algorithm, step, lesson, status, widgets}: what the viewer shows
-// now, for the browser test (tests/web/) and anyone curious in the console.
+// now, for the browser test (tests/web/) and anyone curious in the console. widgets: by name,
+// [x0, y0, x1, y1, visible, then the x0, y0, x1, y1 of the visible part of its window], in CSS
+// pixels of the canvas.
 void publish(const viewer::Session& s, int frames);
 
 }  // namespace cg::web
