@@ -119,6 +119,8 @@ void publish(const viewer::Session& s, int frames) {
                         {"step", s.index()},
                         {"lesson", s.lesson_id},
                         {"status", s.status},
+                        {"canvas", {s.canvas_rect.min.x, s.canvas_rect.min.y, s.canvas_rect.max.x,
+                                    s.canvas_rect.max.y}},
                         {"widgets", widgets}};
     js_publish(state.dump().c_str());
 }

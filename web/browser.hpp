@@ -37,10 +37,10 @@ std::optional<std::string> fragment_json();
 // A checkpoint the page handed over since the last frame (an upload, a changed fragment).
 std::optional<std::string> take_pending_checkpoint();
 
-// window.cgsandbox = {frames, algorithm, step, lesson, status, widgets}: what the viewer shows
+// window.cgsandbox = {frames, algorithm, step, lesson, status, canvas, widgets}: what the viewer shows
 // now, for the browser test (tests/web/) and anyone curious in the console. widgets: by name,
 // [x0, y0, x1, y1, visible, then the x0, y0, x1, y1 of the visible part of its window], in CSS
-// pixels of the canvas.
+// pixels of the canvas; canvas: [x0, y0, x1, y1] of the picture's area, the same way.
 void publish(const viewer::Session& s, int frames);
 
 }  // namespace cg::web

@@ -87,7 +87,7 @@ int main() {
     if (!error.empty()) s.set_status("the link's checkpoint: " + error, true);
     s.record_widgets = true;  // published to the page (window.cgsandbox.widgets) for the test
     EM_ASM({
-        document.getElementById('status').textContent = '';
+        document.getElementById("status").textContent = "";
         window.addEventListener('hashchange', () => {
             try { Module.cgPending = decodeURIComponent(location.hash.slice(1)); } catch (e) {}
         });

@@ -30,8 +30,8 @@ void tooltip(const char* text) {
 bool write_file(const std::string& path, const std::string& text) {
     std::ofstream f(path, std::ios::binary);
     f << text;
-    f.close();
 #ifdef __EMSCRIPTEN__
+    f.close();
     return f && web::download_file(path, "application/octet-stream");
 #else
     return static_cast<bool>(f);
@@ -45,7 +45,7 @@ void save_checkpoint(Session& s) {
         s.set_status("cannot write " + s.checkpoint_path, true);
 }
 
-void open_checkpoint(Session& s) {
+[[maybe_unused]] void open_checkpoint(Session& s) {  // the web build uploads instead
     try {
         json j = parse_json(read_text_file(s.checkpoint_path));
         rebase_image_paths(j, folder_of(s.checkpoint_path));  // texture images beside the file

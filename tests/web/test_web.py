@@ -7,7 +7,8 @@ and chromium-driver through Selenium; WebGL 2 drawn by SwiftShader, no GPU neede
   2. a click on the Liang-Barsky lesson (a real mouse event where the viewer drew it) opens it;
   3. the Right arrow key (a real key event) steps forward: the page's state says step 1, and the
      canvas's pixels change; the Left arrow steps back, to the pixels of step 0;
-  4. a checkpoint in the URL's fragment opens exactly that step;
+  4. a checkpoint in the URL's fragment opens exactly that step (with --desktop, its canvas is
+     compared with the desktop's `render --checkpoint`, pixel by pixel within a tolerance);
   5. "Copy link" puts the step shown into the address, which opens that step again.
 With --screenshot FILE.png it also saves the first frame there, and step 5 of the lesson (the
 README's picture) as FILE-liang-barsky-step5.png.
@@ -24,6 +25,7 @@ import io
 import json
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 import threading
@@ -40,6 +42,7 @@ from selenium.webdriver.common.keys import Keys
 
 WIDTH, HEIGHT = 1280, 800      # the size of the README's pictures
 FIRST_FRAME_LIMIT = 2.0        # seconds from navigation to the first frame (issue 24)
+DESKTOP_TOLERANCE = 0.02      # share of the canvas's pixels that may differ from the desktop's
 WAIT = 30.0                    # seconds any one state may take to come (a loaded machine)
 
 
@@ -156,7 +159,28 @@ def key(driver, k):
     ActionChains(driver).send_keys(k).perform()
 
 
-def test(site, screenshot):
+def compare_with_desktop(driver, s, desktop, checkpoint):
+    """The canvas as the desktop's `render --checkpoint --full` draws the same checkpoint at the
+    same size. Only the picture's area is compared, below its caption (which on screen also
+    lists the mouse's actions); pixels differ where the two GL drivers round lines differently."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path, out = os.path.join(tmp, "checkpoint.json"), os.path.join(tmp, "desktop.png")
+        with open(path, "w") as f:
+            json.dump(checkpoint, f)
+        subprocess.run([desktop, "render", "--checkpoint", path, "--full",
+                        "--size", f"{WIDTH}x{HEIGHT}", "--out", out], check=True)
+        expected = Image.open(out).convert("RGB")
+    x0, y0, x1, y1 = (int(v) for v in s["canvas"])
+    box = (x0, y0 + 70, x1, y1)
+    differ = changed_pixels(expected.crop(box), canvas_pixels(driver).crop(box))
+    share = differ / ((box[2] - box[0]) * (box[3] - box[1]))
+    print(f"against the desktop's render --checkpoint: {share:.2%} of the canvas's pixels differ")
+    if share > DESKTOP_TOLERANCE:
+        raise Failure(f"the checkpoint's canvas differs from the desktop's in {share:.2%} of its "
+                      f"pixels (tolerance {DESKTOP_TOLERANCE:.0%})")
+
+
+def test(site, screenshot, desktop):
     with serve(site) as url, chromium() as driver:
         # 1. The first frame, the lesson list.
         # The time is the page's own (performance.now() at the first frame, from navigation).
@@ -217,6 +241,8 @@ def test(site, screenshot):
             raise Failure(f"the checkpoint URL opened {s['algorithm']} at step {s['step']}, "
                           f"not liang-barsky at step 5 (status: {s['status']!r})")
         print("checkpoint URL: liang-barsky at step 5")
+        if desktop:
+            compare_with_desktop(driver, settled(driver, s), desktop, checkpoint)
         if screenshot:  # the README's picture, docs/images/liang-barsky.png, is this step
             settled(driver, s)
             canvas_pixels(driver).save(screenshot.replace(".png", "-liang-barsky-step5.png"))
@@ -242,12 +268,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("site")
     parser.add_argument("--screenshot", help="also save the first frame as this PNG")
+    parser.add_argument("--desktop", help="the desktop cgsandbox: compare the checkpoint's step "
+                        "with its `render --checkpoint` (pixels, within a tolerance)")
     args = parser.parse_args()
     if not os.path.isfile(os.path.join(args.site, "index.html")):
         print(f"test_web: no site in {args.site}: run `make web` first", file=sys.stderr)
         return 1
     try:
-        test(args.site, args.screenshot)
+        test(args.site, args.screenshot, args.desktop)
     except Failure as e:
         print(f"test_web: FAILED: {e}", file=sys.stderr)
         return 1
