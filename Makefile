@@ -4,9 +4,9 @@
 #               then build the sanitizer configuration and run the whole suite again under
 #               AddressSanitizer + UBSan, with a 30-second run of each fuzz target
 # and a few more: make build, make test-normal, make test-sanitize, make bench, make fuzz,
-# make screenshots, make clean.
+# make screenshots, make clean; and the browser build: make web, make serve-web, make test-web.
 .PHONY: all deps configure build build-sanitize run test test-normal test-sanitize bench fuzz \
-	screenshots clean
+	screenshots clean web serve-web test-web
 
 FUZZ_SECONDS ?= 600
 
@@ -56,5 +56,20 @@ fuzz: build-sanitize
 screenshots: build
 	@scripts/screenshots.sh build/bin/cgsandbox docs/images
 
+# The viewer in a browser (docs/web.md): WebAssembly + WebGL 2 into build-web/site/, a static
+# folder for any web server; its own dependencies (emscripten, SDL2 and Dear ImGui sources,
+# Chromium for the test) are installed by scripts/install-web-deps.sh, only for these targets.
+WEB_PORT ?= 8080
+web:
+	@scripts/web-build.sh
+
+serve-web: web
+	@echo "CG Sandbox: http://127.0.0.1:$(WEB_PORT)/ (Ctrl-C stops)"
+	@python3 -m http.server $(WEB_PORT) --bind 127.0.0.1 --directory build-web/site
+
+# The browser test (tests/web/): headless Chromium on the built site.
+test-web: web
+	@/usr/bin/python3 tests/web/test_web.py build-web/site
+
 clean:
-	rm -rf build build-sanitize build-bench
+	rm -rf build build-sanitize build-bench build-web/cmake build-web/site

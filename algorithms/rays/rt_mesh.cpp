@@ -259,6 +259,9 @@ double subtree_cost(const std::vector<MeshNode>& nodes, int index, double root_a
 
 MeshBvh build_mesh_bvh(const mesh::Mesh& m, int threads) {
     if (threads <= 0) threads = 2;
+#ifdef __EMSCRIPTEN__
+    threads = 1;  // the browser build has no threads (no -pthread): std::thread would throw
+#endif
     MeshBvh out;
     const std::size_t n = m.triangles.size();
     if (n == 0) return out;

@@ -1017,6 +1017,9 @@ Image render(const Scene& s, int threads) {
     img.height = s.camera.height;
     img.rgba.assign(static_cast<std::size_t>(img.width) * img.height, 0);
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+#ifdef __EMSCRIPTEN__
+    threads = 1;  // the browser build has no threads (no -pthread): std::thread would throw
+#endif
     threads = std::min(threads, img.height);
     std::vector<RayCounts> counts(threads);
     // Rows interleaved between the threads (row j to thread j mod n), which balances the work

@@ -13,6 +13,9 @@
 #include "viewer/palette.hpp"
 #include "viewer/session.hpp"
 #include "viewer/ui.hpp"
+#ifdef __EMSCRIPTEN__
+#include "browser.hpp"  // web/: the screenshot as a download
+#endif
 
 namespace cg::viewer {
 
@@ -111,7 +114,13 @@ void take_screenshot(Session& s, const GuiHost& host) {
         int width = 0, height = 0;
         const std::vector<std::uint8_t> pixels = read_back(host, width, height);
         write_png(path, width, height, pixels);
+#ifdef __EMSCRIPTEN__
+        // Written into the page's memory, then handed to the browser as a download.
+        if (!web::download_file(path, "image/png")) throw std::runtime_error("cannot download " + path);
+        s.set_status("Downloaded " + path, false);
+#else
         s.set_status("Saved " + path, false);
+#endif
     } catch (const std::exception& e) {
         s.set_status(e.what(), true);
     }
@@ -230,6 +239,11 @@ void Viewer::draw_frame(double seconds) {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplSDL2_NewFrame();
+#ifdef __EMSCRIPTEN__
+    // Two animation frames may read the same time in a browser (its clock is coarsened), and
+    // ImGui 1.86 wants time to pass between frames.
+    ImGui::GetIO().DeltaTime = std::max(ImGui::GetIO().DeltaTime, 1e-4f);
+#endif
     feed_.apply(ImGui::GetIO());
     ImGui::NewFrame();
     draw_ui(s, ImGui::GetIO().DisplaySize, true, true);

@@ -51,6 +51,9 @@ bool has_env(const char* name) {
 // there would be invisible, so the viewer reports that there is no display instead. An
 // explicit SDL_VIDEODRIVER is always respected.
 void choose_video_driver(GuiHost::Mode mode) {
+#ifdef __EMSCRIPTEN__
+    return;  // in a browser the one driver is the page's canvas
+#endif
     if (has_env("SDL_VIDEODRIVER") || has_env("WAYLAND_DISPLAY")) return;
     if (has_env("DISPLAY")) {
         SDL_SetHint(SDL_HINT_VIDEODRIVER, "x11");  // an unreachable X server is then an error
@@ -81,9 +84,18 @@ GuiHost::GuiHost(const char* title, int width, int height, Mode mode) {
                 "cannot open the display" +
                 std::string(has_env("DISPLAY") ? std::string(" ") + std::getenv("DISPLAY") : ""));
 
+#ifdef __EMSCRIPTEN__
+        // WebGL 2, which is OpenGL ES 3.0 (docs/web.md); the viewer uses nothing more.
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 0);
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_ES);
+        constexpr const char* kGlslVersion = "#version 300 es";
+#else
         SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
         SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
         SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+        constexpr const char* kGlslVersion = "#version 330 core";
+#endif
         SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
         Uint32 flags = SDL_WINDOW_OPENGL |
                        (mode == Mode::Window ? SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI
@@ -102,7 +114,9 @@ GuiHost::GuiHost(const char* title, int width, int height, Mode mode) {
         context_ = SDL_GL_CreateContext(window_);
         if (!context_) throw NoDisplay(SDL_GetError());
         SDL_GL_MakeCurrent(window_, context_);
+#ifndef __EMSCRIPTEN__  // the browser paces frames itself (emscripten_set_main_loop)
         if (mode == Mode::Window) SDL_GL_SetSwapInterval(1);  // vsync: 60 fps, no busy loop
+#endif
         gl_ = Gl::load();
 
         IMGUI_CHECKVERSION();
@@ -116,7 +130,7 @@ GuiHost::GuiHost(const char* title, int width, int height, Mode mode) {
                 throw std::runtime_error("cannot start ImGui's SDL backend");
             sdl_backend_ = true;
         }
-        if (!ImGui_ImplOpenGL3_Init("#version 330 core"))
+        if (!ImGui_ImplOpenGL3_Init(kGlslVersion))
             throw std::runtime_error("cannot start ImGui's OpenGL backend");
         gl_backend_ = true;
         // The font atlas sampled at its nearest texel: the glyphs are drawn at whole pixels,

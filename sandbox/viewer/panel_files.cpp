@@ -14,6 +14,9 @@
 #include "viewer/palette.hpp"
 #include "viewer/panels.hpp"
 #include "viewer/text_wrap.hpp"
+#ifdef __EMSCRIPTEN__
+#include "browser.hpp"  // web/: downloads, uploads and links instead of files
+#endif
 
 namespace cg::viewer {
 
@@ -23,10 +26,16 @@ void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
+// In a browser the file is written into the page's memory and then downloaded.
 bool write_file(const std::string& path, const std::string& text) {
     std::ofstream f(path, std::ios::binary);
     f << text;
+#ifdef __EMSCRIPTEN__
+    f.close();
+    return f && web::download_file(path, "application/octet-stream");
+#else
     return static_cast<bool>(f);
+#endif
 }
 
 void save_checkpoint(Session& s) {
@@ -36,7 +45,7 @@ void save_checkpoint(Session& s) {
         s.set_status("cannot write " + s.checkpoint_path, true);
 }
 
-void open_checkpoint(Session& s) {
+[[maybe_unused]] void open_checkpoint(Session& s) {  // the web build uploads instead
     try {
         json j = parse_json(read_text_file(s.checkpoint_path));
         rebase_image_paths(j, folder_of(s.checkpoint_path));  // texture images beside the file
@@ -71,8 +80,13 @@ void draw_files_row(Session& s) {
     s.note_widget("Screenshot");
     tooltip("Save the whole window as cgsandbox-<id>-step<k>.png here");
 
+#ifdef __EMSCRIPTEN__
+    const float share = button_width("Copy link") + gap;
+#else
+    const float share = 0;
+#endif
     flow(ImGui::CalcTextSize("Checkpoint").x + path + button_width("Save") + button_width("Open") +
-             3 * gap,
+             3 * gap + share,
          em * 1.5f);
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("Checkpoint");
@@ -85,8 +99,22 @@ void draw_files_row(Session& s) {
     if (ImGui::Button("Save")) save_checkpoint(s);
     s.note_widget("Save");
     ImGui::SameLine();
+#ifdef __EMSCRIPTEN__
+    // The browser's file picker: the page opens the chosen file (web/main.cpp).
+    if (ImGui::Button("Open")) web::upload_checkpoint();
+    s.note_widget("Open");
+    tooltip("Open a checkpoint file from this computer");
+    ImGui::SameLine();
+    if (ImGui::Button("Copy link")) {
+        const std::string url = web::share_link(s.checkpoint());
+        s.set_status("Link to this step (in the address bar, and copied): " + url, false);
+    }
+    s.note_widget("Copy link");
+    tooltip("This step as a link: the checkpoint in the address after #");
+#else
     if (ImGui::Button("Open")) open_checkpoint(s);
     s.note_widget("Open");
+#endif
 
     const char* exp = "Export worked example…";
     // Wide enough for "worked-sutherland-hodgman.md", within reason.

@@ -1,0 +1,97 @@
+// The browser's main (the emscripten build, web/): the viewer as `cgsandbox` opens it without
+// arguments — the lesson list, the first algorithm beside it — or, when the address's fragment
+// holds a checkpoint (a shared link), exactly that step. The browser owns the loop: each
+// animation frame runs one turn of the viewer's own loop (Viewer::turn, never sleeping), and
+// main returns while the page lives on.
+#include <emscripten.h>
+
+#include <SDL.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "browser.hpp"
+#include "io/registry.hpp"
+#include "viewer/app.hpp"
+#include "viewer/host.hpp"
+#include "viewer/session.hpp"
+
+namespace {
+
+struct Page {
+    const cg::Registry registry = cg::builtin_registry();
+    std::unique_ptr<cg::viewer::Viewer> viewer;
+};
+Page* page = nullptr;  // for the tab's lifetime: never freed
+
+// A checkpoint's JSON read against the registry; the error, as the viewer would say it, if not.
+std::optional<cg::Checkpoint> read_checkpoint(const std::string& text, std::string& error) {
+    try {
+        return cg::checkpoint_from_json(cg::parse_json(text), page->registry);
+    } catch (const std::exception& e) {
+        error = e.what();
+        return std::nullopt;
+    }
+}
+
+// A redraw on the next turn: the viewer draws when events come (Viewer::turn), and a
+// checkpoint opened from the page is not one.
+void wake() {
+    SDL_Event e{};
+    e.type = SDL_USEREVENT;
+    SDL_PushEvent(&e);
+}
+
+void frame() {
+    cg::viewer::Viewer& v = *page->viewer;
+    if (std::optional<std::string> text = cg::web::take_pending_checkpoint()) {
+        std::string error;
+        if (std::optional<cg::Checkpoint> c = read_checkpoint(*text, error)) {
+            v.session().set_status("Opened the checkpoint", false);
+            v.session().load(*c);
+        } else {
+            v.session().set_status("checkpoint: " + error, true);
+        }
+        wake();
+    }
+    const int before = v.frames();
+    v.turn(0);
+    if (v.frames() != before) cg::web::publish(v.session(), v.frames());
+}
+
+}  // namespace
+
+extern "C" {
+// For the page: open a checkpoint's JSON (a changed fragment, a test) as the viewer's Open does.
+EMSCRIPTEN_KEEPALIVE void cg_web_load_checkpoint(const char* json) {
+    EM_ASM({ Module.cgPending = UTF8ToString($0); }, json);
+}
+}
+
+int main() {
+    page = new Page;
+    std::optional<cg::Checkpoint> initial;
+    std::string error;
+    if (std::optional<std::string> text = cg::web::fragment_json())
+        initial = read_checkpoint(*text, error);
+    try {
+        page->viewer = std::make_unique<cg::viewer::Viewer>(page->registry, initial);
+    } catch (const std::exception& e) {
+        // Most likely no WebGL 2 in this browser: say so on the page, not only in the console.
+        EM_ASM({ document.getElementById('status').textContent = 'Cannot start: ' + UTF8ToString($0); },
+               e.what());
+        return 1;
+    }
+    cg::viewer::Session& s = page->viewer->session();
+    if (!error.empty()) s.set_status("the link's checkpoint: " + error, true);
+    s.record_widgets = true;  // published to the page (window.cgsandbox.widgets) for the test
+    EM_ASM({
+        document.getElementById("status").textContent = "";
+        window.addEventListener('hashchange', () => {
+            try { Module.cgPending = decodeURIComponent(location.hash.slice(1)); } catch (e) {}
+        });
+    });
+    emscripten_set_main_loop(frame, 0, false);
+    return 0;
+}
