@@ -9,6 +9,6 @@ source scripts/web-env.sh
 lock=()
 [[ -n ${CG_BUILD_LOCK:-} ]] && lock=(flock "$CG_BUILD_LOCK")
 if [[ ! -f build-web/cmake/build.ninja ]]; then
-  emcmake cmake -S web -B build-web/cmake -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  emcmake cmake -S sandbox/web -B build-web/cmake -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
 "${lock[@]}" cmake --build build-web/cmake

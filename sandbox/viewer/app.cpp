@@ -14,7 +14,7 @@
 #include "viewer/session.hpp"
 #include "viewer/ui.hpp"
 #ifdef __EMSCRIPTEN__
-#include "browser.hpp"  // web/: the screenshot as a download
+#include "browser.hpp"  // sandbox/web/: the screenshot as a download
 #endif
 
 namespace cg::viewer {

@@ -15,7 +15,7 @@
 #include "viewer/panels.hpp"
 #include "viewer/text_wrap.hpp"
 #ifdef __EMSCRIPTEN__
-#include "browser.hpp"  // web/: downloads, uploads and links instead of files
+#include "browser.hpp"  // sandbox/web/: downloads, uploads and links instead of files
 #endif
 
 namespace cg::viewer {
@@ -100,7 +100,7 @@ void draw_files_row(Session& s) {
     s.note_widget("Save");
     ImGui::SameLine();
 #ifdef __EMSCRIPTEN__
-    // The browser's file picker: the page opens the chosen file (web/main.cpp).
+    // The browser's file picker: the page opens the chosen file (sandbox/web/main.cpp).
     if (ImGui::Button("Open")) web::upload_checkpoint();
     s.note_widget("Open");
     tooltip("Open a checkpoint file from this computer");

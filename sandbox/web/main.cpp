@@ -1,4 +1,4 @@
-// The browser's main (the emscripten build, web/): the viewer as `cgsandbox` opens it without
+// The browser's main (the emscripten build, sandbox/web/): the viewer as `cgsandbox` opens it without
 // arguments — the lesson list, the first algorithm beside it — or, when the address's fragment
 // holds a checkpoint (a shared link), exactly that step. The browser owns the loop: each
 // animation frame runs one turn of the viewer's own loop (Viewer::turn, never sleeping), and
@@ -19,16 +19,18 @@
 
 namespace {
 
+// What the page keeps for the tab's lifetime (made in main, never freed: the tab's end frees it),
+// handed to each animation frame by emscripten_set_main_loop_arg.
 struct Page {
     const cg::Registry registry = cg::builtin_registry();
     std::unique_ptr<cg::viewer::Viewer> viewer;
 };
-Page* page = nullptr;  // for the tab's lifetime: never freed
 
 // A checkpoint's JSON read against the registry; the error, as the viewer would say it, if not.
-std::optional<cg::Checkpoint> read_checkpoint(const std::string& text, std::string& error) {
+std::optional<cg::Checkpoint> read_checkpoint(const cg::Registry& registry, const std::string& text,
+                                              std::string& error) {
     try {
-        return cg::checkpoint_from_json(cg::parse_json(text), page->registry);
+        return cg::checkpoint_from_json(cg::parse_json(text), registry);
     } catch (const std::exception& e) {
         error = e.what();
         return std::nullopt;
@@ -43,11 +45,12 @@ void wake() {
     SDL_PushEvent(&e);
 }
 
-void frame() {
+void frame(void* arg) {
+    Page* page = static_cast<Page*>(arg);
     cg::viewer::Viewer& v = *page->viewer;
     if (std::optional<std::string> text = cg::web::take_pending_checkpoint()) {
         std::string error;
-        if (std::optional<cg::Checkpoint> c = read_checkpoint(*text, error)) {
+        if (std::optional<cg::Checkpoint> c = read_checkpoint(page->registry, *text, error)) {
             v.session().set_status("Opened the checkpoint", false);
             v.session().load(*c);
         } else {
@@ -70,11 +73,11 @@ EMSCRIPTEN_KEEPALIVE void cg_web_load_checkpoint(const char* json) {
 }
 
 int main() {
-    page = new Page;
+    Page* page = new Page;
     std::optional<cg::Checkpoint> initial;
     std::string error;
     if (std::optional<std::string> text = cg::web::fragment_json())
-        initial = read_checkpoint(*text, error);
+        initial = read_checkpoint(page->registry, *text, error);
     try {
         page->viewer = std::make_unique<cg::viewer::Viewer>(page->registry, initial);
     } catch (const std::exception& e) {
@@ -92,6 +95,6 @@ int main() {
             try { Module.cgPending = decodeURIComponent(location.hash.slice(1)); } catch (e) {}
         });
     });
-    emscripten_set_main_loop(frame, 0, false);
+    emscripten_set_main_loop_arg(frame, page, 0, false);
     return 0;
 }
