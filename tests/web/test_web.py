@@ -12,7 +12,7 @@ and chromium-driver through Selenium; WebGL 2 drawn by SwiftShader, no GPU neede
   5. "Copy link" puts the step shown into the address, which opens that step again.
 With --screenshot FILE.png it also saves the first frame there, and step 5 of the lesson (the
 README's picture) as FILE-liang-barsky-step5.png.
-The page publishes what the viewer shows as window.cgsandbox (web/browser.cpp): the frame count,
+The page publishes what the viewer shows as window.cgsandbox (sandbox/web/browser.cpp): the frame count,
 algorithm, step, open lesson, and where each control was drawn.
 
 Usage: test_web.py SITE_DIR [--screenshot FILE.png]. Exit 0 on success, 1 with the reason.
