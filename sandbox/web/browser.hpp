@@ -1,5 +1,5 @@
-// What the viewer does differently in a browser (the emscripten build, sandbox/web/): files go out as
-// downloads and come in as uploads, a checkpoint travels as a link (its JSON in the URL's
+// What the viewer does differently in a browser (the emscripten build, sandbox/web/): files go
+// out as downloads and come in as uploads, a checkpoint travels as a link (its JSON in the URL's
 // fragment), and the page can read what the viewer shows (window.cgsandbox) for the browser
 // test. Only built for the web; the viewer calls it from inside `#ifdef __EMSCRIPTEN__`.
 #pragma once
