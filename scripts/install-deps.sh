@@ -2,9 +2,10 @@
 # Installs the Debian packages CG Sandbox needs, if any are missing.
 # Quick and silent when everything is present; `apt-get update` first otherwise;
 # apt-get directly as root, through sudo otherwise.
+# With arguments, those packages instead of the list below (scripts/install-web-deps.sh).
 set -euo pipefail
 
-packages=(
+default_packages=(
   cmake ninja-build g++ pkg-config make
   libsdl2-dev libimgui-dev libglm-dev catch2 libstb-dev
   nlohmann-json3-dev libcli11-dev libbenchmark-dev libpolyclipping-dev libtinyobjloader-dev
@@ -13,6 +14,7 @@ packages=(
   clang libclang-rt-14-dev
   optipng pngquant
 )
+if (($#)); then packages=("$@"); else packages=("${default_packages[@]}"); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -14,21 +14,9 @@ deps=$PWD/build-web/deps
 source "$(dirname "$0")/web-env.sh"
 
 # --- 1. packages ---------------------------------------------------------------------------
-packages=(emscripten node-acorn chromium chromium-driver python3-selenium python3-pil cmake ninja-build
-          libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev fonts-dejavu-core)
-missing=()
-for p in "${packages[@]}"; do
-  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
-  [[ "$status" == "install ok installed" ]] || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "Installing missing packages: ${missing[*]}"
-  sudo=()
-  [[ $(id -u) -eq 0 ]] || sudo=(sudo)
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo[@]}" apt-get update -qq
-  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+"$(dirname "$0")/install-deps.sh" emscripten node-acorn chromium chromium-driver python3-selenium \
+  python3-pil cmake ninja-build libglm-dev nlohmann-json3-dev libstb-dev libtinyobjloader-dev \
+  fonts-dejavu-core
 
 # --- 2. sources --------------------------------------------------------------------------------
 if [[ ! -f $deps/src/SDL2-2.26.5/CMakeLists.txt || ! -f $deps/src/imgui-1.86/imgui.cpp ]]; then
