@@ -34,7 +34,7 @@ std::string write_temp(const std::string& name, const std::string& text) {
 
 namespace {
 
-// `env`: the environment to run with (this process's own when null).
+// `env`: the environment to run with (this process's own by default).
 ProcessResult run_once(const std::vector<std::string>& argv, const std::string& stdin_text,
                        char* const* env = environ) {
     static int counter = 0;  // distinct temp files per call within this test process
