@@ -1,6 +1,7 @@
 # CG Sandbox — the two commands:
 #   make run    install what is missing, build, and open the viewer
-#   make test   install what is missing, build, and run every test (GUI tests under xvfb-run),
+#   make test   install what is missing, build the desktop viewer and the browser build, and run
+#               every test (GUI tests under xvfb-run, the browser test in headless Chromium);
 #               then build the sanitizer configuration and run the whole suite again under
 #               AddressSanitizer + UBSan, with a 30-second run of each fuzz target
 # and a few more: make build, make test-normal, make test-sanitize, make bench, make fuzz,
@@ -30,8 +31,10 @@ run: build
 
 test: test-normal test-sanitize
 
-test-normal: build
-	@ctest --preset default
+# The normal suite includes the browser test (web_browser, tests/web/), so the site is built
+# first; CG_WEB_REQUIRED turns its "no site, skipped" into a failure.
+test-normal: build web
+	@CG_WEB_REQUIRED=1 ctest --preset default
 
 test-sanitize: build-sanitize
 	@ctest --preset sanitize
