@@ -51,21 +51,27 @@ double cross(dvec2 a, dvec2 b) {
 }
 
 // side(X) = orient · (B − A) × (X − A): twice the signed area of A, B, X, positive on the
-// inner side of A→B. Multiplying by ±1 is exact, so both orientations round alike.
+// inner side of A→B. Multiplying by ±1 is exact, so both orientations round alike. The state
+// machine keeps AB = B − A from the edge's first step (the same double each time it is formed).
+double side_of(double orient, dvec2 A, dvec2 AB, dvec2 X) {
+    return orient * cross(AB, X - A);
+}
 double side(double orient, dvec2 A, dvec2 B, dvec2 X) {
-    return orient * cross(B - A, X - A);
+    return side_of(orient, A, B - A, X);
 }
 
 // Where S→P crosses line AB, given side values of opposite kinds (one ≥ 0, the other < 0, so
 // the denominator is not zero): the side value is linear in t and vanishes at
 // t = side_S / (side_S − side_P).
-dvec2 intersection(dvec2 A, dvec2 B, dvec2 S, dvec2 P, double side_S, double side_P, double& t) {
+dvec2 intersection(dvec2 A, dvec2 AB, dvec2 S, dvec2 P, double side_S, double side_P, double& t) {
     t = side_S / (side_S - side_P);
     dvec2 I = S + t * (P - S);
     // An axis-parallel edge fixes one coordinate: set it exactly, so I lies on the line.
-    if (A.x == B.x)
+    // (B.x − A.x == 0 exactly when B.x == A.x: with gradual underflow a difference of two
+    // distinct doubles is never 0.)
+    if (AB.x == 0)
         I.x = A.x;
-    else if (A.y == B.y)
+    else if (AB.y == 0)
         I.y = A.y;
     return I;
 }
@@ -337,6 +343,8 @@ void SutherlandHodgman::advance(State& s) {
             s.j = 0;
             s.A = s.in->window[s.k];
             s.B = s.in->window[s.k + 1 == m ? 0 : s.k + 1];
+            s.AB = s.B - s.A;
+            s.n = static_cast<int>(s.input.size());
             s.output.clear();
             // As if the edge before had just left P = the last vertex: it becomes S below.
             s.side_P = side(s.orient, s.A, s.B, s.input.back());
@@ -377,20 +385,20 @@ void SutherlandHodgman::clip_polygon_edge(State& s) {
     // into a local, GCC loaded it as one 16-byte vector and split it into x and y through the
     // stack, a store-and-reload on the way to the case test (the step's hard-to-predict branch);
     // clip() reads its P the same way.
-    const int j = s.j, n = static_cast<int>(s.input.size());
-    const dvec2 A = s.A, B = s.B;
+    const int j = s.j, n = s.n;
+    const dvec2 A = s.A, AB = s.AB;
     const dvec2& P = s.input[j];
-    const double side_S = s.side_P, side_P = side(s.orient, A, B, P);
+    const double side_S = s.side_P, side_P = side_of(s.orient, A, AB, P);
     if (side_S >= 0 && side_P >= 0) {  // case 1: in → in
         s.output.push_back(P);
     } else if (side_S >= 0) {  // case 2: going out
         const dvec2 S = s.input[j == 0 ? n - 1 : j - 1];
         double t;
-        s.output.push_back(intersection(A, B, S, P, side_S, side_P, t));
+        s.output.push_back(intersection(A, AB, S, P, side_S, side_P, t));
     } else if (side_P >= 0) {  // case 4: going in
         const dvec2 S = s.input[j == 0 ? n - 1 : j - 1];
         double t;
-        s.output.push_back(intersection(A, B, S, P, side_S, side_P, t));
+        s.output.push_back(intersection(A, AB, S, P, side_S, side_P, t));
         s.output.push_back(P);
     }  // case 3, out → out: nothing
     s.side_P = side_P;
@@ -548,7 +556,7 @@ double SutherlandHodgman::crossing_t(const State& s) {
     const Case c = which_case(s);
     if (c != Case::InOut && c != Case::OutIn) return 0;
     double t;
-    intersection(s.A, s.B, edge_S(s), edge_P(s), side(s.orient, s.A, s.B, edge_S(s)), s.side_P, t);
+    intersection(s.A, s.AB, edge_S(s), edge_P(s), side(s.orient, s.A, s.B, edge_S(s)), s.side_P, t);
     return t;
 }
 
@@ -570,19 +578,19 @@ SutherlandHodgman::Result SutherlandHodgman::clip(const std::vector<dvec2>& wind
     std::vector<std::vector<dvec2>> after_edge;
     after_edge.reserve(m);
     for (std::size_t k = 0; k < m; ++k) {
-        const dvec2 A = window[k], B = window[k + 1 == m ? 0 : k + 1];
+        const dvec2 A = window[k], B = window[k + 1 == m ? 0 : k + 1], AB = B - A;
         output.clear();
         dvec2 S = input.back();
-        double side_S = side(orient, A, B, S);
+        double side_S = side_of(orient, A, AB, S);
         for (const dvec2& P : input) {  // in place, as clip_polygon_edge reads it
-            const double side_P = side(orient, A, B, P);
+            const double side_P = side_of(orient, A, AB, P);
             double t;
             if (side_S >= 0 && side_P >= 0) {
                 output.push_back(P);
             } else if (side_S >= 0) {
-                output.push_back(intersection(A, B, S, P, side_S, side_P, t));
+                output.push_back(intersection(A, AB, S, P, side_S, side_P, t));
             } else if (side_P >= 0) {
-                output.push_back(intersection(A, B, S, P, side_S, side_P, t));
+                output.push_back(intersection(A, AB, S, P, side_S, side_P, t));
                 output.push_back(P);
             }
             S = P;

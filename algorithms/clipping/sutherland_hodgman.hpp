@@ -82,7 +82,9 @@ struct SutherlandHodgman {
         double orient = 0;       // +1 counter-clockwise window, −1 clockwise (0 before setup)
         int k = -1;              // the window edge being clipped against, 0..m−1 (−1 before)
         int j = 0;               // polygon edges of `input` done in this pass, 0..n
+        int n = 0;               // input's size in this pass (read at every step)
         glm::dvec2 A{0}, B{0};   // window edge k: A = window[k], B = window[k + 1 mod m]
+        glm::dvec2 AB{0};        // B − A, formed once per edge rather than at every step
         // The polygon edge S→P tested last is input[j − 2 mod n]→input[j − 1]. Only side(P)
         // is stored: S, side(S), the case, t and I are found again when asked for (which_case,
         // crossing_t, intersection_I), the same formulas on the same numbers giving the same
