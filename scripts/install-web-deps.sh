@@ -44,9 +44,7 @@ if [[ ! -f $deps/sdl2/lib/libSDL2.a ]]; then
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$deps/sdl2" \
     -DSDL_SHARED=OFF -DSDL_STATIC=ON -DSDL_TEST=OFF -DSDL_PTHREADS=OFF \
     > "$deps/sdl2-configure.log" 2>&1 || { cat "$deps/sdl2-configure.log" >&2; exit 1; }
-  lock=()
-  [[ -n ${CG_BUILD_LOCK:-} ]] && lock=(flock "$CG_BUILD_LOCK")
-  "${lock[@]}" cmake --build "$deps/sdl2-build" >/dev/null
+  "${build_lock[@]}" cmake --build "$deps/sdl2-build" >/dev/null
   cmake --install "$deps/sdl2-build" >/dev/null
 fi
 

@@ -6,9 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-web-deps.sh
 source scripts/web-env.sh
-lock=()
-[[ -n ${CG_BUILD_LOCK:-} ]] && lock=(flock "$CG_BUILD_LOCK")
 if [[ ! -f build-web/cmake/build.ninja ]]; then
   emcmake cmake -S sandbox/web -B build-web/cmake -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
-"${lock[@]}" cmake --build build-web/cmake
+"${build_lock[@]}" cmake --build build-web/cmake

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <thread>
 
+#include "core/threads.hpp"
+
 namespace cg::rt {
 
 using glm::dvec3;
@@ -258,10 +260,7 @@ double subtree_cost(const std::vector<MeshNode>& nodes, int index, double root_a
 }  // namespace
 
 MeshBvh build_mesh_bvh(const mesh::Mesh& m, int threads) {
-    if (threads <= 0) threads = 2;
-#ifdef __EMSCRIPTEN__
-    threads = 1;  // the browser build has no threads (no -pthread): std::thread would throw
-#endif
+    threads = usable_threads(threads <= 0 ? 2 : threads);
     MeshBvh out;
     const std::size_t n = m.triangles.size();
     if (n == 0) return out;

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/format.hpp"
+#include "core/threads.hpp"
 #include "core/scene.hpp"
 #include "core/step.hpp"
 #include "rays/rt_csg.hpp"
@@ -1016,10 +1017,7 @@ Image render(const Scene& s, int threads) {
     img.width = s.camera.width;
     img.height = s.camera.height;
     img.rgba.assign(static_cast<std::size_t>(img.width) * img.height, 0);
-    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-#ifdef __EMSCRIPTEN__
-    threads = 1;  // the browser build has no threads (no -pthread): std::thread would throw
-#endif
+    threads = usable_threads(threads);
     threads = std::min(threads, img.height);
     std::vector<RayCounts> counts(threads);
     // Rows interleaved between the threads (row j to thread j mod n), which balances the work
