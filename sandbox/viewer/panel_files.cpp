@@ -38,9 +38,18 @@ bool write_file(const std::string& path, const std::string& text) {
 #endif
 }
 
+// What a written file's message says: the desktop's verb, or "Downloaded" where the file went to
+// the browser's downloads rather than to the path shown.
+std::string wrote(const char* verb, const std::string& path) {
+#ifdef __EMSCRIPTEN__
+    verb = "Downloaded";
+#endif
+    return std::string(verb) + " " + path;
+}
+
 void save_checkpoint(Session& s) {
     if (write_file(s.checkpoint_path, checkpoint_to_json(s.checkpoint()).dump(2) + "\n"))
-        s.set_status("Saved " + s.checkpoint_path, false);
+        s.set_status(wrote("Saved", s.checkpoint_path), false);
     else
         s.set_status("cannot write " + s.checkpoint_path, true);
 }
@@ -61,7 +70,7 @@ void export_worked_example(Session& s) {
     try {
         const std::string text = export_worked(s, exports_json(s.export_path));
         if (write_file(s.export_path, text))
-            s.set_status("Wrote " + s.export_path, false);
+            s.set_status(wrote("Wrote", s.export_path), false);
         else
             s.set_status("cannot write " + s.export_path, true);
     } catch (const std::exception& e) {

@@ -58,7 +58,7 @@ EM_JS(void, js_upload, (), {
 // link is in the address bar and in the viewer's message anyway.
 EM_JS(char*, js_share, (const char* json), {
     const url = location.href.split('#')[0] + '#' + encodeURIComponent(UTF8ToString(json));
-    history.replaceState(null, '', url);
+    history.replaceState(null, "", url);
     if (navigator.clipboard) navigator.clipboard.writeText(url).catch(() => {});
     const n = lengthBytesUTF8(url) + 1;
     const p = _malloc(n);

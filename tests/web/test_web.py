@@ -9,13 +9,16 @@ and chromium-driver through Selenium; WebGL 2 drawn by SwiftShader, no GPU neede
      canvas's pixels change; the Left arrow steps back, to the pixels of step 0;
   4. a checkpoint in the URL's fragment opens exactly that step (with --desktop, its canvas is
      compared with the desktop's `render --checkpoint`, pixel by pixel within a tolerance);
-  5. "Copy link" puts the step shown into the address, which opens that step again.
+  5. "Copy link" puts the step shown into the address, which opens that step again;
+  6. a changed fragment in the open page opens its checkpoint without a reload: a 3D algorithm
+     (arbitrary-axis), whose picture differs from the last and changes when stepped.
 With --screenshot FILE.png it also saves the first frame there, and step 5 of the lesson (the
 README's picture) as FILE-liang-barsky-step5.png.
 The page publishes what the viewer shows as window.cgsandbox (sandbox/web/browser.cpp): the frame count,
 algorithm, step, open lesson, and where each control was drawn.
 
-Usage: test_web.py SITE_DIR [--screenshot FILE.png]. Exit 0 on success, 1 with the reason.
+Usage: test_web.py SITE_DIR [--screenshot FILE.png] [--desktop CGSANDBOX]. Exit 0 on success,
+1 with the reason, 77 (skipped) without a built site unless CG_WEB_REQUIRED is set.
 """
 import argparse
 import contextlib
@@ -265,6 +268,34 @@ def test(site, screenshot, desktop):
         if (s["algorithm"], s["step"]) != ("liang-barsky", 6):
             raise Failure(f"the shared link opened {s['algorithm']} at step {s['step']}, not 6")
         print("Copy link: the link opens liang-barsky at step 6")
+
+        # 6. A changed fragment in the open page (a student pasting another link) opens that
+        #    checkpoint without a reload: here a 3D algorithm, whose view draws and steps.
+        s = settled(driver, s)
+        before, frames = canvas_pixels(driver), s["frames"]
+        rotation = {"algorithm": "arbitrary-axis", "step": 2,
+                    "input": {"axis": [1, 1, 0], "angle_deg": 90,
+                              "points": [[1, 0, 0], [0, 0, 1]]}}
+        driver.execute_script("location.hash = arguments[0]",
+                              urllib.parse.quote(json.dumps(rotation)))
+        s = settled(driver, wait_for(driver, "the changed fragment's step",
+                                     lambda s: (s["algorithm"], s["step"]) == ("arbitrary-axis", 2)))
+        if s["frames"] < frames:
+            raise Failure("the page reloaded for a changed fragment (its frame count restarted)")
+        step2 = canvas_pixels(driver)
+        changed = changed_pixels(before, step2)
+        print(f"changed fragment: arbitrary-axis at step 2 in the same page, {changed} pixels "
+              f"differ from liang-barsky's")
+        if changed < 2000:
+            raise Failure(f"the 3D lesson's picture looks like the last one ({changed} pixels)")
+        canvas = driver.find_element(By.ID, "canvas")
+        ActionChains(driver).move_to_element_with_offset(canvas, 0, 0).click().perform()
+        key(driver, Keys.ARROW_RIGHT)
+        s = settled(driver, wait_for(driver, "arbitrary-axis step 3", lambda s: s["step"] == 3))
+        changed = changed_pixels(step2, canvas_pixels(driver))
+        print(f"Right arrow: arbitrary-axis step 2 → 3, {changed} pixels changed")
+        if changed < 200:
+            raise Failure(f"arbitrary-axis step 3 looks like step 2 ({changed} pixels changed)")
 
 
 def main():
