@@ -83,8 +83,9 @@ def chromium():
                  "--disable-sync", "--no-first-run", "--disable-quic",
                  "--hide-scrollbars", "--force-device-scale-factor=1"]:
         options.add_argument(flag)
-    if os.geteuid() == 0:
-        options.add_argument("--no-sandbox")  # Chromium refuses to run as root otherwise
+    # Chromium's sandbox refuses to run as root, and as another user needs the user namespaces
+    # that containers (CI's among them) often lack; the page is our own, served locally.
+    options.add_argument("--no-sandbox")
     service = Service(executable_path="/usr/bin/chromedriver")
     driver = webdriver.Chrome(options=options, service=service)
     # The page exactly WIDTH × HEIGHT CSS pixels (the window's size includes its frame).
