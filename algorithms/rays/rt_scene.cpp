@@ -9,9 +9,9 @@
 #include <thread>
 
 #include "core/format.hpp"
-#include "core/threads.hpp"
 #include "core/scene.hpp"
 #include "core/step.hpp"
+#include "core/threads.hpp"
 #include "rays/rt_csg.hpp"
 
 namespace cg::rt {
