@@ -8,14 +8,12 @@
 #include <algorithm>
 #include <iostream>
 
+#include "viewer/deliver.hpp"
 #include "viewer/grid_texture.hpp"
 #include "viewer/host.hpp"
 #include "viewer/palette.hpp"
 #include "viewer/session.hpp"
 #include "viewer/ui.hpp"
-#ifdef __EMSCRIPTEN__
-#include "browser.hpp"  // sandbox/web/: the screenshot as a download
-#endif
 
 namespace cg::viewer {
 
@@ -114,13 +112,8 @@ void take_screenshot(Session& s, const GuiHost& host) {
         int width = 0, height = 0;
         const std::vector<std::uint8_t> pixels = read_back(host, width, height);
         write_png(path, width, height, pixels);
-#ifdef __EMSCRIPTEN__
-        // Written into the page's memory, then handed to the browser as a download.
-        if (!web::download_file(path, "image/png")) throw std::runtime_error("cannot download " + path);
-        s.set_status("Downloaded " + path, false);
-#else
-        s.set_status("Saved " + path, false);
-#endif
+        if (!deliver(path, "image/png")) throw std::runtime_error("cannot download " + path);
+        s.set_status(delivered("Saved", path), false);
     } catch (const std::exception& e) {
         s.set_status(e.what(), true);
     }

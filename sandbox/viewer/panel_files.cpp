@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rays/texture_json.hpp"
+#include "viewer/deliver.hpp"
 #include "viewer/export.hpp"
 #include "viewer/flow.hpp"
 #include "viewer/im_colour.hpp"
@@ -15,7 +16,7 @@
 #include "viewer/panels.hpp"
 #include "viewer/text_wrap.hpp"
 #ifdef __EMSCRIPTEN__
-#include "browser.hpp"  // sandbox/web/: downloads, uploads and links instead of files
+#include "browser.hpp"  // sandbox/web/: uploads and links instead of files
 #endif
 
 namespace cg::viewer {
@@ -26,30 +27,16 @@ void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
-// In a browser the file is written into the page's memory and then downloaded.
 bool write_file(const std::string& path, const std::string& text) {
     std::ofstream f(path, std::ios::binary);
     f << text;
-#ifdef __EMSCRIPTEN__
     f.close();
-    return f && web::download_file(path, "application/octet-stream");
-#else
-    return static_cast<bool>(f);
-#endif
-}
-
-// What a written file's message says: the desktop's verb, or "Downloaded" where the file went to
-// the browser's downloads rather than to the path shown.
-std::string wrote(const char* verb, const std::string& path) {
-#ifdef __EMSCRIPTEN__
-    verb = "Downloaded";
-#endif
-    return std::string(verb) + " " + path;
+    return f && deliver(path, "application/octet-stream");
 }
 
 void save_checkpoint(Session& s) {
     if (write_file(s.checkpoint_path, checkpoint_to_json(s.checkpoint()).dump(2) + "\n"))
-        s.set_status(wrote("Saved", s.checkpoint_path), false);
+        s.set_status(delivered("Saved", s.checkpoint_path), false);
     else
         s.set_status("cannot write " + s.checkpoint_path, true);
 }
@@ -70,7 +57,7 @@ void export_worked_example(Session& s) {
     try {
         const std::string text = export_worked(s, exports_json(s.export_path));
         if (write_file(s.export_path, text))
-            s.set_status(wrote("Wrote", s.export_path), false);
+            s.set_status(delivered("Wrote", s.export_path), false);
         else
             s.set_status("cannot write " + s.export_path, true);
     } catch (const std::exception& e) {

@@ -10,25 +10,20 @@
 
 namespace {
 
-// A JavaScript string into a malloc'd C string (freed by the caller), or null for none.
+// Each returns a JavaScript string as a malloc'd C string (emscripten's allocateUTF8; freed by
+// the caller, owned() below), or null for none.
 EM_JS(char*, js_take_pending, (), {
     const text = Module.cgPending;
     Module.cgPending = null;
     if (text === null || text === undefined) return 0;
-    const n = lengthBytesUTF8(text) + 1;
-    const p = _malloc(n);
-    stringToUTF8(text, p, n);
-    return p;
+    return allocateUTF8(text);
 });
 
 EM_JS(char*, js_fragment, (), {
     if (location.hash.length < 2) return 0;
     let text;
     try { text = decodeURIComponent(location.hash.slice(1)); } catch (e) { text = location.hash.slice(1); }
-    const n = lengthBytesUTF8(text) + 1;
-    const p = _malloc(n);
-    stringToUTF8(text, p, n);
-    return p;
+    return allocateUTF8(text);
 });
 
 EM_JS(void, js_download, (const char* name, const char* mime, const void* data, int size), {
@@ -60,10 +55,7 @@ EM_JS(char*, js_share, (const char* json), {
     const url = location.href.split('#')[0] + '#' + encodeURIComponent(UTF8ToString(json));
     history.replaceState(null, "", url);
     if (navigator.clipboard) navigator.clipboard.writeText(url).catch(() => {});
-    const n = lengthBytesUTF8(url) + 1;
-    const p = _malloc(n);
-    stringToUTF8(url, p, n);
-    return p;
+    return allocateUTF8(url);
 });
 
 EM_JS(void, js_publish, (const char* state), {

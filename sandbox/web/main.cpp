@@ -65,13 +65,6 @@ void frame(void* arg) {
 
 }  // namespace
 
-extern "C" {
-// For the page: open a checkpoint's JSON (a changed fragment, a test) as the viewer's Open does.
-EMSCRIPTEN_KEEPALIVE void cg_web_load_checkpoint(const char* json) {
-    EM_ASM({ Module.cgPending = UTF8ToString($0); }, json);
-}
-}
-
 int main() {
     Page* page = new Page;
     std::optional<cg::Checkpoint> initial;
