@@ -163,6 +163,12 @@ def key(driver, k):
     ActionChains(driver).send_keys(k).perform()
 
 
+def focus_canvas(driver):
+    """A click in the middle of the picture, so that the keys go to the viewer (after a load)."""
+    canvas = driver.find_element(By.ID, "canvas")
+    ActionChains(driver).move_to_element_with_offset(canvas, 0, 0).click().perform()
+
+
 def compare_with_desktop(driver, s, desktop, checkpoint):
     """The canvas as the desktop's `render --checkpoint --full` draws the same checkpoint at the
     same size. Only the picture's area is compared, below its caption (which on screen also
@@ -256,8 +262,7 @@ def test(site, screenshot, desktop):
 
         # 5. Copy link: step once more, share, and open the link in a fresh load.
         s = settled(driver, s)
-        canvas = driver.find_element(By.ID, "canvas")
-        ActionChains(driver).move_to_element_with_offset(canvas, 0, 0).click().perform()
+        focus_canvas(driver)
         key(driver, Keys.ARROW_RIGHT)
         s = settled(driver, wait_for(driver, "step 6", lambda s: s["step"] == 6))
         click_widget(driver, s, "Copy link")
@@ -289,8 +294,7 @@ def test(site, screenshot, desktop):
               f"differ from liang-barsky's")
         if changed < 2000:
             raise Failure(f"the 3D lesson's picture looks like the last one ({changed} pixels)")
-        canvas = driver.find_element(By.ID, "canvas")
-        ActionChains(driver).move_to_element_with_offset(canvas, 0, 0).click().perform()
+        focus_canvas(driver)
         key(driver, Keys.ARROW_RIGHT)
         s = settled(driver, wait_for(driver, "arbitrary-axis step 3", lambda s: s["step"] == 3))
         changed = changed_pixels(step2, canvas_pixels(driver))
