@@ -165,7 +165,7 @@ void Bvh::validate(const Input& in) {
     // overflow a double.
     auto check = [](double v, const std::string& field) {
         if (!std::isfinite(v) || std::fabs(v) > kCoordLimit)
-            throw InputError(field, "must be a number within ±1e150 (got " + num(v) +
+            throw InputError(field, "must be a number within ±1e150 (got " + given(v) +
                                         "): beyond, the intersection formulas' squares overflow");
     };
     Bounds scene;

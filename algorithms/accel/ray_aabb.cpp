@@ -49,7 +49,7 @@ Value tv(double t) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 // A number after a minus sign: negative ones in parentheses, "0 − (−2)".
@@ -123,8 +123,8 @@ void RayAabb::validate(const Input& in) {
     for (int i = 0; i < 3; ++i)
         if (in.min[i] > in.max[i])
             throw InputError(at("box.max", i),
-                             "is less than box.min[" + std::to_string(i) + "] (" + num(in.max[i]) +
-                                 " < " + num(in.min[i]) +
+                             "is less than box.min[" + std::to_string(i) + "] (" + given(in.max[i]) +
+                                 " < " + given(in.min[i]) +
                                  "): the box is empty; it needs min ≤ max on every axis (a flat "
                                  "box, min = max, is allowed)");
     if (in.direction == dvec3(0.0))

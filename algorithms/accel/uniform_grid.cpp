@@ -68,7 +68,7 @@ Value cell_value(const Cell& c) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 bool finite3(dvec3 p) {
@@ -199,7 +199,7 @@ void UniformGrid::validate(const Input& in) {
             if (!(in.bounds.min[a] < in.bounds.max[a]))
                 throw InputError(at("bounds.max", a),
                                  "must be greater than bounds.min[" + std::to_string(a) + "] (" +
-                                     num(in.bounds.max[a]) + " ≤ " + num(in.bounds.min[a]) +
+                                     given(in.bounds.max[a]) + " ≤ " + given(in.bounds.min[a]) +
                                      "): every cell needs a size on every axis");
         for (std::size_t p = 0; p < n; ++p) {
             const Bounds b = bounds(in.primitives[p]);
@@ -208,9 +208,9 @@ void UniformGrid::validate(const Input& in) {
                     throw InputError(
                         at("primitives", static_cast<int>(p)),
                         std::string("reaches ") + kAxis[a] + " = " +
-                            num(b.min[a] < in.bounds.min[a] ? b.min[a] : b.max[a]) +
-                            ", outside the grid's bounds [" + num(in.bounds.min[a]) + ", " +
-                            num(in.bounds.max[a]) +
+                            given(b.min[a] < in.bounds.min[a] ? b.min[a] : b.max[a]) +
+                            ", outside the grid's bounds [" + given(in.bounds.min[a]) + ", " +
+                            given(in.bounds.max[a]) +
                             "]: the grid would never test it (bounds must hold every primitive)");
         }
     }

@@ -120,9 +120,9 @@ VertexNormals::Prepared VertexNormals::prepare(const Input& in) {
             const double x = in.vertices[v][d];
             const std::string f = "vertices[" + std::to_string(v) + "][" + std::to_string(d) + "]";
             if (!std::isfinite(x))
-                throw InputError(f, "must be a finite number (got " + num(x) + ")");
+                throw InputError(f, "must be a finite number (got " + given(x) + ")");
             if (std::fabs(x) > kMaxCoordinate)
-                throw InputError(f, "must be within ±1e100 (got " + num(x) +
+                throw InputError(f, "must be within ±1e100 (got " + given(x) +
                                         "), so that the cross products stay finite");
         }
     if (static_cast<long long>(in.faces.size()) > kMaxFaces)

@@ -262,16 +262,16 @@ std::string at(const char* list, std::size_t i, const char* field) {
 
 void check_point(glm::dvec2 p, const std::string& field) {
     for (int c = 0; c < 2; ++c) {
-        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + num(p[c]) + ")");
+        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + given(p[c]) + ")");
         if (std::fabs(p[c]) > Boids::kMaxCoordinate)
-            throw InputError(field, "is too large (" + num(p[c]) + "): at most 1e6 in size");
+            throw InputError(field, "is too large (" + given(p[c]) + "): at most 1e6 in size");
     }
 }
 
 void check_range(double x, double hi, const std::string& field, const char* what) {
     if (!std::isfinite(x) || x < 0)
-        throw InputError(field, std::string("must be ≥ 0 (") + what + "), got " + num(x));
-    if (x > hi) throw InputError(field, "is too large (" + num(x) + "): at most " + num(hi));
+        throw InputError(field, std::string("must be ≥ 0 (") + what + "), got " + given(x));
+    if (x > hi) throw InputError(field, "is too large (" + given(x) + "): at most " + given(hi));
 }
 
 }  // namespace
@@ -296,36 +296,36 @@ void Boids::validate(const Input& in) {
     for (int c = 0; c < 2; ++c)
         if (!(in.world_max[c] > in.world_min[c]))
             throw InputError("world", std::string("max must be above min in ") + "xy"[c] +
-                                          " (got " + num(in.world_min[c]) + " to " +
-                                          num(in.world_max[c]) + ")");
+                                          " (got " + given(in.world_min[c]) + " to " +
+                                          given(in.world_max[c]) + ")");
     check_range(in.radius, kMaxCoordinate, "radius", "the perception radius r");
     if (in.separation_radius != -1)
         check_range(in.separation_radius, kMaxCoordinate, "separation_radius",
                     "the separation radius r_sep");
     if (!std::isfinite(in.fov) || in.fov < 0 || in.fov > 360)
-        throw InputError("fov", "must be a field of view of 0 to 360 degrees, got " + num(in.fov));
+        throw InputError("fov", "must be a field of view of 0 to 360 degrees, got " + given(in.fov));
     if (in.edges == Edges::Wrap) {
         const glm::dvec2 size = in.world_max - in.world_min;
         const double side = std::min(size.x, size.y);
         if (in.radius > 0.5 * side)
-            throw InputError("world", "is " + num(side) +
+            throw InputError("world", "is " + given(side) +
                                           " across at its narrowest, less than 2r = " +
-                                          num(2 * in.radius) +
+                                          given(2 * in.radius) +
                                           ": in a wrapped world the perception circle would meet "
                                           "itself");
     }
     if (in.margin != -1) {
         if (!std::isfinite(in.margin) || in.margin < 1e-6 || in.margin > kMaxCoordinate)
-            throw InputError("margin", "must be a width of 1e-6 to 1e6, got " + num(in.margin));
+            throw InputError("margin", "must be a width of 1e-6 to 1e6, got " + given(in.margin));
     }
     for (std::size_t k = 0; k < in.obstacles.size(); ++k) {
         const Obstacle& o = in.obstacles[k];
         check_point(o.center, at("obstacles", k, "center"));
         if (!std::isfinite(o.radius) || o.radius <= 0)
-            throw InputError(at("obstacles", k, "radius"), "must be > 0, got " + num(o.radius));
+            throw InputError(at("obstacles", k, "radius"), "must be > 0, got " + given(o.radius));
         if (o.radius > kMaxCoordinate)
             throw InputError(at("obstacles", k, "radius"),
-                             "is too large (" + num(o.radius) + "): at most 1e6");
+                             "is too large (" + given(o.radius) + "): at most 1e6");
     }
     if (in.obstacles.size() > std::size_t(kMaxObstacles))
         throw InputError("obstacles", "has " + std::to_string(in.obstacles.size()) +
@@ -339,11 +339,11 @@ void Boids::validate(const Input& in) {
     check_range(in.min_speed, kMaxValue, "min_speed", "a speed");
     check_range(in.max_force, kMaxValue, "max_force", "a steering limit");
     if (in.min_speed > in.max_speed)
-        throw InputError("min_speed", "must be at most max_speed = " + num(in.max_speed) +
-                                          " (got " + num(in.min_speed) + ")");
+        throw InputError("min_speed", "must be at most max_speed = " + given(in.max_speed) +
+                                          " (got " + given(in.min_speed) + ")");
     if (!std::isfinite(in.dt) || in.dt <= 0)
-        throw InputError("dt", "must be a time step > 0, got " + num(in.dt));
-    if (in.dt > 10) throw InputError("dt", "is too large (" + num(in.dt) + "): at most 10");
+        throw InputError("dt", "must be a time step > 0, got " + given(in.dt));
+    if (in.dt > 10) throw InputError("dt", "is too large (" + given(in.dt) + "): at most 10");
     if (in.steps < 1 || in.steps > kMaxSteps)
         throw InputError("steps", "must be 1 to " + std::to_string(kMaxSteps) + " (got " +
                                       std::to_string(in.steps) + ")");

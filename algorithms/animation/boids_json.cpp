@@ -91,7 +91,7 @@ struct JsonIo<Boids> {
             in.margin = r.number("margin");
             if (in.margin < 0)  // −1 means "the default" inside; refuse it here
                 throw InputError(r.field("margin"),
-                                 "must be a width of 1e-6 to 1e6, got " + num(in.margin));
+                                 "must be a width of 1e-6 to 1e6, got " + given(in.margin));
         }
         if (r.has("obstacles")) {
             const json& os = r.get("obstacles");
@@ -114,7 +114,7 @@ struct JsonIo<Boids> {
             if (in.separation_radius < 0)  // −1 means "the default" inside; refuse it here
                 throw InputError(r.field("separation_radius"),
                                  "must be ≥ 0 (the separation radius r_sep), got " +
-                                     num(in.separation_radius));
+                                     given(in.separation_radius));
         }
         if (r.has("fov")) in.fov = r.number("fov");
         if (r.has("weights")) {

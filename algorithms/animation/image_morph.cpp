@@ -246,8 +246,8 @@ void check_image(const Image& img, const char* field) {
         if (std::isfinite(g) && std::fabs(g) <= ImageMorph::kMaxValue) continue;
         const std::string at = std::string(field) + "[" + std::to_string(k / std::size_t(img.width)) +
                                "][" + std::to_string(k % std::size_t(img.width)) + "]";
-        if (!std::isfinite(g)) throw InputError(at, "must be finite (got " + num(g) + ")");
-        throw InputError(at, "is too large (" + num(g) + "): at most 1e6 in size");
+        if (!std::isfinite(g)) throw InputError(at, "must be finite (got " + given(g) + ")");
+        throw InputError(at, "is too large (" + given(g) + "): at most 1e6 in size");
     }
 }
 
@@ -255,21 +255,21 @@ void check_line(const Line& l, const std::string& field) {
     for (const auto& [p, name] : {std::pair{l.p, "[0]"}, std::pair{l.q, "[1]"}})
         for (int c = 0; c < 2; ++c) {
             if (!std::isfinite(p[c]))
-                throw InputError(field + name, "must be finite (got " + num(p[c]) + ")");
+                throw InputError(field + name, "must be finite (got " + given(p[c]) + ")");
             if (std::fabs(p[c]) > ImageMorph::kMaxCoordinate)
                 throw InputError(field + name,
-                                 "is too large (" + num(p[c]) + "): at most 1e4 in size");
+                                 "is too large (" + given(p[c]) + "): at most 1e4 in size");
         }
     if (!(length(l.q - l.p) >= ImageMorph::kMinLength))
-        throw InputError(field, "is degenerate: P = " + num(l.p) + " and Q = " + num(l.q) +
+        throw InputError(field, "is degenerate: P = " + given(l.p) + " and Q = " + given(l.q) +
                                     " coincide, so the line has no direction (it must be at "
                                     "least 1e-6 long)");
 }
 
 void check_param(double x, double lo, double hi, const char* field, const char* what) {
     if (!std::isfinite(x) || x < lo || x > hi)
-        throw InputError(field, std::string("must be ") + what + " from " + num(lo) + " to " +
-                                    num(hi) + ", got " + num(x));
+        throw InputError(field, std::string("must be ") + what + " from " + given(lo) + " to " +
+                                    given(hi) + ", got " + given(x));
 }
 
 }  // namespace
@@ -302,7 +302,7 @@ void ImageMorph::validate(const Input& in) {
     for (std::size_t k = 0; k < in.alphas.size(); ++k)
         if (!std::isfinite(in.alphas[k]) || in.alphas[k] < 0 || in.alphas[k] > 1)
             throw InputError("alphas[" + std::to_string(k) + "]",
-                             "must be from 0 to 1, got " + num(in.alphas[k]));
+                             "must be from 0 to 1, got " + given(in.alphas[k]));
     const long long pixels = (long long)in.alphas.size() * in.image_a.width * in.image_a.height;
     if (pixels > kMaxPixels)
         throw InputError("alphas", std::to_string(in.alphas.size()) + " frames of " +

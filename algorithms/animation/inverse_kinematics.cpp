@@ -273,9 +273,9 @@ std::string at(const char* list, std::size_t i) {
 
 void check_point(glm::dvec3 p, const std::string& field) {
     for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + num(p[c]) + ")");
+        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + given(p[c]) + ")");
         if (std::fabs(p[c]) > IK::kMaxCoordinate)
-            throw InputError(field, "is too large (" + num(p[c]) + "): at most 1e6 in size");
+            throw InputError(field, "is too large (" + given(p[c]) + "): at most 1e6 in size");
     }
 }
 
@@ -291,9 +291,9 @@ void IK::validate(const Input& in) {
         const double l = in.lengths[i];
         if (!std::isfinite(l) || l <= 0)
             throw InputError(at("lengths", i),
-                             "must be > 0 (a link of zero length has no direction), got " + num(l));
+                             "must be > 0 (a link of zero length has no direction), got " + given(l));
         if (l > kMaxCoordinate)
-            throw InputError(at("lengths", i), "is too large (" + num(l) + "): at most 1e6");
+            throw InputError(at("lengths", i), "is too large (" + given(l) + "): at most 1e6");
     }
     if (!in.angles.empty() && in.angles.size() != n)
         throw InputError("angles", "must give one angle per link: " + std::to_string(n) + " (got " +
@@ -302,7 +302,7 @@ void IK::validate(const Input& in) {
         if (!std::isfinite(in.angles[i]) || std::fabs(in.angles[i]) > kMaxAngle)
             throw InputError(at("angles", i),
                              "must be a finite angle in degrees, at most 1e6 in size (got " +
-                                 num(in.angles[i]) + ")");
+                                 given(in.angles[i]) + ")");
     if (!in.axes.empty() && in.axes.size() != n)
         throw InputError("axes", "must give one axis per link: " + std::to_string(n) + " (got " +
                                      std::to_string(in.axes.size()) + ")");
@@ -330,15 +330,15 @@ void IK::validate(const Input& in) {
             throw InputError("target",
                              "analytic is the planar arm: the target must have the "
                              "base's z (" +
-                                 num(in.base.z) + ")");
+                                 given(in.base.z) + ")");
     }
     if (in.method == Method::DLS &&
         (!std::isfinite(in.damping) || in.damping <= 0 || in.damping > kMaxCoordinate))
         throw InputError("damping",
-                         "must be λ > 0 and at most 1e6 (a length), got " + num(in.damping));
+                         "must be λ > 0 and at most 1e6 (a length), got " + given(in.damping));
     if (!std::isfinite(in.tolerance) || in.tolerance <= 0 || in.tolerance > kMaxCoordinate)
         throw InputError("tolerance",
-                         "must be > 0 and at most 1e6 (a distance), got " + num(in.tolerance));
+                         "must be > 0 and at most 1e6 (a distance), got " + given(in.tolerance));
     if (in.iterations < 1 || in.iterations > kMaxIterations)
         throw InputError("iterations", "must be 1 to " + std::to_string(kMaxIterations) + " (got " +
                                            std::to_string(in.iterations) + ")");

@@ -225,10 +225,10 @@ std::string key_field(std::size_t i, const char* field) {
 }
 
 void check_number(double x, double limit, const std::string& field) {
-    if (!std::isfinite(x)) throw InputError(field, "must be finite (got " + num(x) + ")");
+    if (!std::isfinite(x)) throw InputError(field, "must be finite (got " + given(x) + ")");
     if (std::fabs(x) > limit)
         throw InputError(field,
-                         "is too large (" + num(x) + "): at most " + num(limit) + " in size");
+                         "is too large (" + given(x) + "): at most " + given(limit) + " in size");
 }
 
 }  // namespace
@@ -253,27 +253,27 @@ void Keyframes::validate(const Input& in) {
         for (int q = 0; q < 3; ++q)
             if (!std::isfinite(tcb[q]) || tcb[q] < -1 || tcb[q] > 1)
                 throw InputError(key_field(i, names[q]),
-                                 "must lie in [−1, 1] (got " + num(tcb[q]) + ")");
+                                 "must lie in [−1, 1] (got " + given(tcb[q]) + ")");
         if (i > 0 && !(k.t > in.keys[i - 1].t))
             throw InputError(
                 key_field(i, "t"),
                 k.t == in.keys[i - 1].t
-                    ? "repeats the time of keys[" + std::to_string(i - 1) + "] (" + num(k.t) +
+                    ? "repeats the time of keys[" + std::to_string(i - 1) + "] (" + given(k.t) +
                           "): two values at one time are no function of time"
                     : "must be later than keys[" + std::to_string(i - 1) + "].t = " +
-                          num(in.keys[i - 1].t) + " (got " + num(k.t) + "): keys in order of time");
+                          given(in.keys[i - 1].t) + " (got " + given(k.t) + "): keys in order of time");
         if (i > 0 && k.t - in.keys[i - 1].t < kMinGap)
             throw InputError(key_field(i, "t"),
-                             "is only " + num(k.t - in.keys[i - 1].t) + " s after keys[" +
+                             "is only " + given(k.t - in.keys[i - 1].t) + " s after keys[" +
                                  std::to_string(i - 1) +
                                  "]: keys closer than 1e-6 s are refused (the slope between "
                                  "them would overflow)");
     }
     if (!std::isfinite(in.dt) || in.dt <= 0)
-        throw InputError("dt", "must be a time step > 0, got " + num(in.dt));
+        throw InputError("dt", "must be a time step > 0, got " + given(in.dt));
     if (frame_count(in) > kMaxFrames)
         throw InputError("dt", "gives more than " + std::to_string(kMaxFrames) + " frames for " +
-                                   num(in.keys.back().t - in.keys.front().t) +
+                                   given(in.keys.back().t - in.keys.front().t) +
                                    " seconds: take a larger dt");
     if (in.samples < 1 || in.samples > kMaxSamples)
         throw InputError("samples", "must be 1 to " + std::to_string(kMaxSamples) + " (got " +
@@ -284,8 +284,8 @@ void Keyframes::validate(const Input& in) {
     if (in.has_query) {
         if (!std::isfinite(in.query) || in.query < in.keys.front().t || in.query > in.keys.back().t)
             throw InputError("query", "must lie between the first and last key's time [" +
-                                          num(in.keys.front().t) + ", " + num(in.keys.back().t) +
-                                          "] (got " + num(in.query) + ")");
+                                          given(in.keys.front().t) + ", " + given(in.keys.back().t) +
+                                          "] (got " + given(in.query) + ")");
     }
 }
 

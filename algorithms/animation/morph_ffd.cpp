@@ -138,9 +138,9 @@ namespace {
 
 void check_point(glm::dvec2 p, const std::string& field) {
     for (int c = 0; c < 2; ++c) {
-        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + num(p[c]) + ")");
+        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + given(p[c]) + ")");
         if (std::fabs(p[c]) > MorphFfd::kMaxCoordinate)
-            throw InputError(field, "is too large (" + num(p[c]) + "): at most 1e6 in size");
+            throw InputError(field, "is too large (" + given(p[c]) + "): at most 1e6 in size");
     }
 }
 
@@ -158,7 +158,7 @@ void MorphFfd::validate(const Input& in) {
     for (int c = 0; c < 2; ++c)
         if (!(in.box_max[c] > in.box_min[c]))
             throw InputError("box", std::string("max must be above min in ") + "xy"[c] + " (got " +
-                                        num(in.box_min[c]) + " to " + num(in.box_max[c]) + ")");
+                                        given(in.box_min[c]) + " to " + given(in.box_max[c]) + ")");
     if (in.l < 1 || in.l > kMaxDegree || in.m < 1 || in.m > kMaxDegree)
         throw InputError("degree", "must be [l, m] with each 1 to " + std::to_string(kMaxDegree) +
                                        " (got [" + std::to_string(in.l) + ", " +

@@ -53,7 +53,7 @@ struct JsonIo<MorphFfd> {
                 if (v != std::floor(v) || v < 1 || v > MorphFfd::kMaxDegree)
                     throw InputError(element(f, c), "must be a whole degree 1 to " +
                                                         std::to_string(MorphFfd::kMaxDegree) +
-                                                        " (got " + num(v) + ")");
+                                                        " (got " + given(v) + ")");
                 (c == 0 ? in.l : in.m) = int(v);
             }
         }
@@ -75,7 +75,7 @@ struct JsonIo<MorphFfd> {
                 for (std::size_t c = 0; c < 2; ++c) {
                     const double v = as_number(p[c], element(pf, c));
                     if (v != std::floor(v) || std::fabs(v) > 1e6)
-                        throw InputError(element(pf, c), "must be a whole index (got " + num(v) + ")");
+                        throw InputError(element(pf, c), "must be a whole index (got " + given(v) + ")");
                     (c == 0 ? mv.i : mv.j) = int(v);
                 }
                 if (m.has("by") == m.has("to"))
@@ -121,7 +121,7 @@ struct JsonIo<MorphFfd> {
                 if (v != std::floor(v) || v < 1 || v > MorphFfd::kMaxDegree)
                     throw InputError(element(f, c), "must be a whole degree 1 to " +
                                                         std::to_string(MorphFfd::kMaxDegree) +
-                                                        " (got " + num(v) + ")");
+                                                        " (got " + given(v) + ")");
                 (c == 0 ? in.l : c == 1 ? in.m : in.n) = int(v);
             }
         } else {
@@ -146,7 +146,7 @@ struct JsonIo<MorphFfd> {
                 for (std::size_t c = 0; c < 3; ++c) {
                     const double v = as_number(p[c], element(pf, c));
                     if (v != std::floor(v) || std::fabs(v) > 1e6)
-                        throw InputError(element(pf, c), "must be a whole index (got " + num(v) + ")");
+                        throw InputError(element(pf, c), "must be a whole index (got " + given(v) + ")");
                     (c == 0 ? mv.i : c == 1 ? mv.j : mv.k) = int(v);
                 }
                 if (m.has("by") == m.has("to"))
@@ -184,7 +184,7 @@ struct JsonIo<MorphFfd> {
                 for (std::size_t c = 0; c < 2; ++c) {
                     const double v = as_number(es[e][c], element(f, c));
                     if (v != std::floor(v) || std::fabs(v) > 1e6)
-                        throw InputError(element(f, c), "must be a whole index (got " + num(v) + ")");
+                        throw InputError(element(f, c), "must be a whole index (got " + given(v) + ")");
                     pair[c] = int(v);
                 }
                 in.edges.push_back(pair);

@@ -91,9 +91,9 @@ namespace {
 
 void check_point3(glm::dvec3 p, const std::string& field) {
     for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + num(p[c]) + ")");
+        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + given(p[c]) + ")");
         if (std::fabs(p[c]) > MorphFfd::kMaxCoordinate)
-            throw InputError(field, "is too large (" + num(p[c]) + "): at most 1e6 in size");
+            throw InputError(field, "is too large (" + given(p[c]) + "): at most 1e6 in size");
     }
 }
 
@@ -114,7 +114,7 @@ void MorphFfd::validate3(const Input& in) {
     for (int c = 0; c < 3; ++c)
         if (!(in.box3_max[c] > in.box3_min[c]))
             throw InputError("box", std::string("max must be above min in ") + "xyz"[c] + " (got " +
-                                        num(in.box3_min[c]) + " to " + num(in.box3_max[c]) + ")");
+                                        given(in.box3_min[c]) + " to " + given(in.box3_max[c]) + ")");
     const int d[3] = {in.l, in.m, in.n};
     for (int c = 0; c < 3; ++c)
         if (d[c] < 1 || d[c] > kMaxDegree)

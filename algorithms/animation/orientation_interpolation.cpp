@@ -242,13 +242,13 @@ std::string key_field(std::size_t i, const char* field) {
 }
 
 void check_number(double x, const std::string& field) {
-    if (!std::isfinite(x)) throw InputError(field, "must be a finite number (got " + num(x) + ")");
+    if (!std::isfinite(x)) throw InputError(field, "must be a finite number (got " + given(x) + ")");
 }
 
 void check_angle(double a, const std::string& field) {
     check_number(a, field);
     if (std::fabs(a) > OI::kMaxAngleDeg)
-        throw InputError(field, "is too large (" + num(a) + "°): at most 3600° (ten turns) in size");
+        throw InputError(field, "is too large (" + given(a) + "°): at most 3600° (ten turns) in size");
 }
 
 }  // namespace
@@ -298,7 +298,7 @@ void OI::validate(const Input& in) {
                                      "normalised");
                 if (!std::isfinite(len) || len < 1e-150)
                     throw InputError(key_field(i, "quaternion"),
-                                     "has a length (" + num(len) +
+                                     "has a length (" + given(len) +
                                          ") too far from 1 to normalise safely: scale it");
                 break;
             }
@@ -315,7 +315,7 @@ void OI::validate(const Input& in) {
     check_number(in.segment_time, "segment_time");
     if (in.segment_time <= 0 || in.segment_time > kMaxSegmentTime)
         throw InputError("segment_time", "must be a time > 0 and at most 10000 seconds (got " +
-                                             num(in.segment_time) + ")");
+                                             given(in.segment_time) + ")");
 }
 
 OI::State OI::start(const Input& in) {

@@ -264,15 +264,15 @@ namespace {
 
 void check_point(glm::dvec3 p, const std::string& field) {
     for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + num(p[c]) + ")");
+        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + given(p[c]) + ")");
         if (std::fabs(p[c]) > Particles::kMaxCoordinate)
-            throw InputError(field, "is too large (" + num(p[c]) + "): at most 1e6 in size");
+            throw InputError(field, "is too large (" + given(p[c]) + "): at most 1e6 in size");
     }
 }
 
 void check_range(double x, double lo, double hi, const std::string& field, const char* what) {
     if (!std::isfinite(x) || x < lo || x > hi)
-        throw InputError(field, std::string("must be ") + what + " (got " + num(x) + ")");
+        throw InputError(field, std::string("must be ") + what + " (got " + given(x) + ")");
 }
 
 // The emitter's lowest signed distance to the plane.
@@ -291,7 +291,7 @@ double lowest(const Particles::Emitter& e, const Particles::Plane& p) {
 void Particles::validate(const Input& in) {
     const Emitter& e = in.emitter;
     if (!std::isfinite(in.dt) || in.dt <= 0)
-        throw InputError("dt", "must be a time step > 0, got " + num(in.dt));
+        throw InputError("dt", "must be a time step > 0, got " + given(in.dt));
     check_range(in.dt, kMinDt, 10, "dt", "from 1e-6 to 10 seconds");
     if (in.frames < 1 || in.frames > kMaxFrames)
         throw InputError("frames", "must be 1 to " + std::to_string(kMaxFrames) + " (got " +
@@ -308,11 +308,11 @@ void Particles::validate(const Input& in) {
     check_range(e.life_max, 0, kMaxLifetime, "emitter.lifetime", "0 to 1e6 seconds");
     if (e.life_min > e.life_max)
         throw InputError("emitter.lifetime", "must be [min, max] with min ≤ max (got [" +
-                                                 num(e.life_min) + ", " + num(e.life_max) + "])");
+                                                 given(e.life_min) + ", " + given(e.life_max) + "])");
     const double total = e.rate * in.dt * double(in.frames);
     if (total > double(kMaxEmitted))
-        throw InputError("emitter.rate", num(e.rate) + " per second for " + num(in.dt * in.frames) +
-                                             " s makes " + num(total) +
+        throw InputError("emitter.rate", given(e.rate) + " per second for " + given(in.dt * in.frames) +
+                                             " s makes " + given(total) +
                                              " particles; at most 100000 in a run");
     if (in.start.size() > std::size_t(kMaxStart))
         throw InputError("start", "has " + std::to_string(in.start.size()) +
@@ -327,7 +327,7 @@ void Particles::validate(const Input& in) {
     check_point(in.gravity, "gravity");
     check_range(in.drag, 0, 1e6, "drag", "≥ 0 (per second)");
     if (in.drag * in.dt > 1)
-        throw InputError("drag", "times dt must be at most 1 (got " + num(in.drag * in.dt) +
+        throw InputError("drag", "times dt must be at most 1 (got " + given(in.drag * in.dt) +
                                      "): a larger c·dt would reverse the velocity in one step");
     if (in.plane.on) {
         const Plane& p = in.plane;
@@ -344,7 +344,7 @@ void Particles::validate(const Input& in) {
         std::min(double(emitted_max), e.rate * (e.life_max + in.dt) + 1) + double(in.start.size());
     if (at_once * in.frames > double(kMaxWork))
         throw InputError("frames", std::to_string(in.frames) + " frames with up to " +
-                                       num(std::floor(at_once)) +
+                                       given(std::floor(at_once)) +
                                        " particles alive is too much work: frames × alive must "
                                        "be at most 2e7");
     if (in.focus < 0 || in.focus > kMaxStart + kMaxEmitted)
@@ -362,7 +362,7 @@ Particles::Input Particles::resolve(const Input& given) {
         const double scale = 1 + max_abs(in.emitter.position) + max_abs(in.plane.point);
         if (lowest(in.emitter, in.plane) < -1e-9 * scale)
             throw InputError("emitter.position", "is below the plane (signed distance " +
-                                                     num(lowest(in.emitter, in.plane)) +
+                                                     cg::given(lowest(in.emitter, in.plane)) +
                                                      "): particles would start inside the ground");
         for (std::size_t i = 0; i < in.start.size(); ++i)
             if (distance(in.plane, in.start[i].position) < -1e-9 * scale)

@@ -224,16 +224,16 @@ std::string at(const char* list, std::size_t i, const char* field) {
 
 void check_point(glm::dvec3 p, const std::string& field) {
     for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + num(p[c]) + ")");
+        if (!std::isfinite(p[c])) throw InputError(field, "must be finite (got " + given(p[c]) + ")");
         if (std::fabs(p[c]) > SpringMass::kMaxCoordinate)
-            throw InputError(field, "is too large (" + num(p[c]) + "): at most 1e6 in size");
+            throw InputError(field, "is too large (" + given(p[c]) + "): at most 1e6 in size");
     }
 }
 
 void check_range(double x, double hi, const std::string& field, const char* what) {
     if (!std::isfinite(x) || x < 0)
-        throw InputError(field, std::string("must be ≥ 0 (") + what + "), got " + num(x));
-    if (x > hi) throw InputError(field, "is too large (" + num(x) + "): at most " + num(hi));
+        throw InputError(field, std::string("must be ≥ 0 (") + what + "), got " + given(x));
+    if (x > hi) throw InputError(field, "is too large (" + given(x) + "): at most " + given(hi));
 }
 
 }  // namespace
@@ -253,10 +253,10 @@ void SpringMass::validate(const Input& in) {
         check_point(m.velocity, at("masses", i, "velocity"));
         if (!std::isfinite(m.mass) || m.mass <= 0)
             throw InputError(at("masses", i, "mass"),
-                             "must be > 0 (F = m a needs a positive mass), got " + num(m.mass));
+                             "must be > 0 (F = m a needs a positive mass), got " + given(m.mass));
         if (m.mass > kMaxMass)
             throw InputError(at("masses", i, "mass"),
-                             "is too large (" + num(m.mass) + "): at most 1e12");
+                             "is too large (" + given(m.mass) + "): at most 1e12");
         if (m.pinned && m.velocity != glm::dvec3(0))
             throw InputError(at("masses", i, "velocity"),
                              "must be 0 for a pinned mass: a pinned mass does not move");
@@ -282,8 +282,8 @@ void SpringMass::validate(const Input& in) {
     check_point(in.gravity, "gravity");
     check_range(in.drag, kMaxStiffness, "drag", "force per unit speed");
     if (!std::isfinite(in.dt) || in.dt <= 0)
-        throw InputError("dt", "must be a time step > 0, got " + num(in.dt));
-    if (in.dt > 1e3) throw InputError("dt", "is too large (" + num(in.dt) + "): at most 1000");
+        throw InputError("dt", "must be a time step > 0, got " + given(in.dt));
+    if (in.dt > 1e3) throw InputError("dt", "is too large (" + given(in.dt) + "): at most 1000");
     if (in.steps < 1 || in.steps > kMaxSteps)
         throw InputError("steps", "must be 1 to " + std::to_string(kMaxSteps) + " (got " +
                                       std::to_string(in.steps) + ")");

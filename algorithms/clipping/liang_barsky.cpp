@@ -41,7 +41,7 @@ void edge_pq(const LiangBarsky::State& s, int k, double& p, double& q) {
 }
 
 void check_finite(double v, const char* field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 std::string edge_equation(const LiangBarsky::State& s, int k) {
@@ -138,11 +138,11 @@ void LiangBarsky::validate(const Input& in) {
     check_finite(in.p1.x, "p1[0]");
     check_finite(in.p1.y, "p1[1]");
     if (in.window.xmin > in.window.xmax)
-        throw InputError("window.xmin", "must not exceed window.xmax (" + num(in.window.xmin) +
-                                            " > " + num(in.window.xmax) + ")");
+        throw InputError("window.xmin", "must not exceed window.xmax (" + given(in.window.xmin) +
+                                            " > " + given(in.window.xmax) + ")");
     if (in.window.ymin > in.window.ymax)
-        throw InputError("window.ymin", "must not exceed window.ymax (" + num(in.window.ymin) +
-                                            " > " + num(in.window.ymax) + ")");
+        throw InputError("window.ymin", "must not exceed window.ymax (" + given(in.window.ymin) +
+                                            " > " + given(in.window.ymax) + ")");
     // dx and the q_k are differences of inputs; keep them finite too.
     if (!std::isfinite(in.p1.x - in.p0.x) || !std::isfinite(in.p1.y - in.p0.y) ||
         !std::isfinite(in.window.xmax - in.window.xmin) ||

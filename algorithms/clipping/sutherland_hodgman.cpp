@@ -111,13 +111,13 @@ void check_points(const std::vector<dvec2>& points, const std::string& name) {
             const std::string field =
                 name + "[" + std::to_string(i) + "][" + std::to_string(c) + "]";
             if (!std::isfinite(v))
-                throw InputError(field, "must be a finite number (got " + num(v) + ")");
+                throw InputError(field, "must be a finite number (got " + given(v) + ")");
             if (std::fabs(v) > kMaxCoordinate)
-                throw InputError(field, "must be at most 1e100 in size (got " + num(v) + ")");
+                throw InputError(field, "must be at most 1e100 in size (got " + given(v) + ")");
             // Below that, edge lengths and areas underflow to zero.
             if (v != 0 && std::fabs(v) < 1e-100)
                 throw InputError(field,
-                                 "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
+                                 "must be 0 or at least 1e-100 in size (got " + given(v) + ")");
         }
     }
 }
@@ -267,7 +267,7 @@ void SutherlandHodgman::validate(const Input& in) {
         if (w[i] == w[next])
             throw InputError("window", "vertices " + std::to_string(i) + " and " +
                                            std::to_string(next) + " are the same point " +
-                                           num(w[i]) +
+                                           given(w[i]) +
                                            (next == 0 ? " (list each vertex once: the polygon "
                                                         "closes itself)"
                                                       : ""));

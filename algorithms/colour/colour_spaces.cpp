@@ -339,12 +339,12 @@ void ColourSpaces::validate(const Input& in) {
                 "colors[" + std::to_string(k) + "][" + std::to_string(i) + "]";
             const std::string what = std::string(upper(in.from)) + "'s " + component(in.from, i);
             if (!std::isfinite(v))
-                throw InputError(field, "must be a finite number (got " + num(v) + ")");
+                throw InputError(field, "must be a finite number (got " + given(v) + ")");
             if (is_linear(in.from)) {
                 if (std::fabs(v) > kMaxLinear)
-                    throw InputError(field, what + " must lie within ±1e6 (got " + num(v) + ")");
+                    throw InputError(field, what + " must lie within ±1e6 (got " + given(v) + ")");
             } else if (!(is_hue(in.from) && i == 0) && (v < 0 || v > 1)) {
-                throw InputError(field, what + " must be in [0, 1] (got " + num(v) + ")");
+                throw InputError(field, what + " must be in [0, 1] (got " + given(v) + ")");
             }
         }
 }

@@ -23,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/format.hpp"
 #include "core/scene.hpp"
 #include "core/step.hpp"
 
@@ -64,7 +65,12 @@ public:
     std::unique_ptr<Run> clone() const override { return std::make_unique<RunOf>(*this); }
     const Spec& spec() const override { return A::spec(); }
     bool done() const override { return A::done(state); }
-    void step(StepInfo* info) override { A::step(state, info); }
+    // The narration as the student reads it: one minus sign (text_minus) whatever the
+    // algorithm's sentence wrote.
+    void step(StepInfo* info) override {
+        A::step(state, info);
+        if (info) info->narration = text_minus(info->narration);
+    }
     void draw(Scene& scene) const override { A::draw(state, scene); }
     bool same_state(const Run& other) const override {
         auto* o = dynamic_cast<const RunOf*>(&other);

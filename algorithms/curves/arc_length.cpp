@@ -164,8 +164,8 @@ void ArcLength::validate(const Input& in) {
         const double f = in.fractions[i];
         const std::string field = "fractions[" + std::to_string(i) + "]";
         if (!std::isfinite(f))
-            throw InputError(field, "must be a finite number (got " + num(f) + ")");
-        if (f < 0 || f > 1) throw InputError(field, "must lie in [0, 1] (got " + num(f) + ")");
+            throw InputError(field, "must be a finite number (got " + given(f) + ")");
+        if (f < 0 || f > 1) throw InputError(field, "must lie in [0, 1] (got " + given(f) + ")");
     }
     if (in.distances.empty()) return;
     const double length = table_length(in.control_points, in.samples);
@@ -173,11 +173,11 @@ void ArcLength::validate(const Input& in) {
         const double d = in.distances[i];
         const std::string field = "distances[" + std::to_string(i) + "]";
         if (!std::isfinite(d))
-            throw InputError(field, "must be a finite number (got " + num(d) + ")");
+            throw InputError(field, "must be a finite number (got " + given(d) + ")");
         if (d < 0 || d > length)
             throw InputError(field,
-                             "must lie in [0, " + num(length) + "], the length of the table with " +
-                                 std::to_string(in.samples) + " samples (got " + num(d) + ")");
+                             "must lie in [0, " + given(length) + "], the length of the table with " +
+                                 std::to_string(in.samples) + " samples (got " + given(d) + ")");
     }
 }
 

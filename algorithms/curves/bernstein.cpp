@@ -163,14 +163,14 @@ void Bernstein::validate(const Input& in) {
                 const std::string field =
                     "transform[" + std::to_string(r) + "][" + std::to_string(c) + "]";
                 if (!std::isfinite(v))
-                    throw InputError(field, "must be a finite number (got " + num(v) + ")");
+                    throw InputError(field, "must be a finite number (got " + given(v) + ")");
                 if (std::fabs(v) > 1e100)
-                    throw InputError(field, "must be within ±1e100 (got " + num(v) + ")");
+                    throw InputError(field, "must be within ±1e100 (got " + given(v) + ")");
             }
         if (m[2] != glm::dvec3(0, 0, 1))
             throw InputError("transform[2]",
                              "must be [0, 0, 1]: only an affine map keeps a Bézier curve (got " +
-                                 num(m[2]) + ")");
+                                 given(m[2]) + ")");
     }
 }
 

@@ -98,28 +98,28 @@ void validate_points(std::span<const glm::dvec3> points, int dim, const std::str
             const double v = points[i][c];
             const std::string at = field + "[" + std::to_string(i) + "][" + std::to_string(c) + "]";
             if (c == 2 && dim == 2) {
-                if (v != 0) throw InputError(at, "must be 0 for a 2D point (got " + num(v) + ")");
+                if (v != 0) throw InputError(at, "must be 0 for a 2D point (got " + given(v) + ")");
                 continue;
             }
             if (!std::isfinite(v))
-                throw InputError(at, "must be a finite number (got " + num(v) + ")");
+                throw InputError(at, "must be a finite number (got " + given(v) + ")");
             if (std::fabs(v) > kMaxCoordinate)
-                throw InputError(at, "must be within ±1e100 (got " + num(v) + ")");
+                throw InputError(at, "must be within ±1e100 (got " + given(v) + ")");
             // Below that, squared distances (arc lengths) underflow to zero.
             if (v != 0 && std::fabs(v) < 1e-100)
-                throw InputError(at, "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
+                throw InputError(at, "must be 0 or at least 1e-100 in size (got " + given(v) + ")");
         }
 }
 
 void validate_t(double t, bool extrapolate, const std::string& field) {
-    if (!std::isfinite(t)) throw InputError(field, "must be a finite number (got " + num(t) + ")");
+    if (!std::isfinite(t)) throw InputError(field, "must be a finite number (got " + given(t) + ")");
     if (!extrapolate && (t < 0 || t > 1))
         throw InputError(field,
-                         "must lie in [0, 1] (got " + num(t) +
+                         "must lie in [0, 1] (got " + given(t) +
                              "); give \"extrapolate\": true to evaluate outside the segment");
     if (std::fabs(t) > kMaxAbsT)
         throw InputError(field,
-                         "must be within ±1000 even when extrapolating (got " + num(t) + ")");
+                         "must be within ±1000 even when extrapolating (got " + given(t) + ")");
 }
 
 }  // namespace cg::curves

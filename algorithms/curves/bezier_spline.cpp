@@ -68,15 +68,15 @@ void check_points(const std::vector<glm::dvec3>& points, int dim, const std::str
             const double v = points[i][c];
             const std::string at = field + "[" + std::to_string(i) + "][" + std::to_string(c) + "]";
             if (c == 2 && dim == 2) {  // a 2D point is stored with z = 0
-                if (v != 0) throw InputError(at, "must be 0 for a 2D point (got " + num(v) + ")");
+                if (v != 0) throw InputError(at, "must be 0 for a 2D point (got " + given(v) + ")");
                 continue;
             }
             if (!std::isfinite(v))
-                throw InputError(at, "must be a finite number (got " + num(v) + ")");
+                throw InputError(at, "must be a finite number (got " + given(v) + ")");
             if (std::fabs(v) > curves::kMaxCoordinate)
-                throw InputError(at, "must be within ±1e100 (got " + num(v) + ")");
+                throw InputError(at, "must be within ±1e100 (got " + given(v) + ")");
             if (v != 0 && std::fabs(v) < 1e-100)
-                throw InputError(at, "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
+                throw InputError(at, "must be 0 or at least 1e-100 in size (got " + given(v) + ")");
         }
 }
 

@@ -21,7 +21,7 @@ void check_point(const dvec3& p, const std::string& field) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(p[i]) || std::fabs(p[i]) > PhotonMap::kMaxCoordinate)
             throw InputError(field + "[" + std::to_string(i) + "]",
-                             "must be within ±1e6 (got " + num(p[i]) + ")");
+                             "must be within ±1e6 (got " + given(p[i]) + ")");
 }
 
 void check_direction(const dvec3& v, const std::string& field) {
@@ -30,7 +30,7 @@ void check_direction(const dvec3& v, const std::string& field) {
 }
 
 void check_range(double v, double lo, double hi, const std::string& field, const char* why) {
-    if (!(v >= lo && v <= hi)) throw InputError(field, std::string(why) + " (got " + num(v) + ")");
+    if (!(v >= lo && v <= hi)) throw InputError(field, std::string(why) + " (got " + given(v) + ")");
 }
 
 std::string at(const char* list, std::size_t i) {
@@ -99,10 +99,10 @@ void PhotonMap::validate(const Input& in) {
         const std::string f = at("lights", i);
         check_point(l.position, f + ".position");
         if (!(l.power > 0 && l.power <= 1e12))
-            throw InputError(f + ".power", "must be > 0 and at most 1e12 (got " + num(l.power) + ")");
+            throw InputError(f + ".power", "must be > 0 and at most 1e12 (got " + given(l.power) + ")");
         check_direction(l.direction, f + ".direction");
         if (!(l.cone_deg >= 1e-4 && l.cone_deg <= 180))
-            throw InputError(f + ".cone_deg", "must be 1e-4 to 180 degrees (got " + num(l.cone_deg) + ")");
+            throw InputError(f + ".cone_deg", "must be 1e-4 to 180 degrees (got " + given(l.cone_deg) + ")");
     }
     if (in.photons < 1 || in.photons > kMaxPhotons)
         throw InputError("photons", "must be 1 to 1000000 (got " + std::to_string(in.photons) + ")");

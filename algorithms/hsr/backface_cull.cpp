@@ -84,9 +84,9 @@ void BackfaceCull::validate(const Input& in) {
         for (int c = 0; c < 3; ++c) {
             const double v = p[c];
             const std::string at = field + "[" + std::to_string(c) + "]";
-            if (std::fabs(v) > 1e50) throw InputError(at, "must be within ±1e50 (got " + num(v) + ")");
+            if (std::fabs(v) > 1e50) throw InputError(at, "must be within ±1e50 (got " + given(v) + ")");
             if (v != 0 && std::fabs(v) < 1e-50)
-                throw InputError(at, "must be 0 or at least 1e-50 in size (got " + num(v) + ")");
+                throw InputError(at, "must be 0 or at least 1e-50 in size (got " + given(v) + ")");
         }
     };
     auto finite3 = [](glm::dvec3 p) {
@@ -157,7 +157,7 @@ void BackfaceCull::validate(const Input& in) {
             if (d > 1e-6 * size)
                 throw InputError(field() + "[" + std::to_string(i) + "]",
                                  "the face is not planar: vertex " + std::to_string(f[i]) +
-                                     " lies " + num(d, 3) +
+                                     " lies " + given(d, 3) +
                                      " off the face's plane (tolerance 1e-6 of its size)");
         }
     }

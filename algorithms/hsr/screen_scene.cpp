@@ -18,7 +18,7 @@ constexpr double kMaxCoordinate = 1e6;  // |x|, |y|, |z|: far beyond any screen,
 constexpr double kPlanarTolerance = 1e-9;  // distance off the plane, relative to the polygon's size
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 // Twice the signed area of the projected outline (shoelace): > 0 counter-clockwise.
@@ -61,15 +61,15 @@ void validate(const ScreenScene& scene) {
                 const std::string f = field + ".vertices[" + std::to_string(i) + "][" + std::to_string(d) + "]";
                 check_finite(v[i][d], f);
                 if (std::fabs(v[i][d]) > kMaxCoordinate)
-                    throw InputError(f, "must lie within ±1e6 of the origin (got " + num(v[i][d]) + ")");
+                    throw InputError(f, "must lie within ±1e6 of the origin (got " + given(v[i][d]) + ")");
                 if (v[i][d] != 0 && std::fabs(v[i][d]) < 1e-100)
-                    throw InputError(f, "must be 0 or at least 1e-100 in size (got " + num(v[i][d]) + ")");
+                    throw InputError(f, "must be 0 or at least 1e-100 in size (got " + given(v[i][d]) + ")");
             }
         for (int d = 0; d < 3; ++d) {
             const std::string f = field + ".color[" + std::to_string(d) + "]";
             check_finite(p.color[d], f);
             if (p.color[d] < 0 || p.color[d] > 1)
-                throw InputError(f, "must be from 0 to 1 (got " + num(p.color[d]) + ")");
+                throw InputError(f, "must be from 0 to 1 (got " + given(p.color[d]) + ")");
         }
         const std::size_t n = v.size();
         for (std::size_t i = 0; i < n; ++i)
@@ -105,7 +105,7 @@ void validate(const ScreenScene& scene) {
             const double dist = std::fabs(pl.a * v[i].x + pl.b * v[i].y + pl.c * v[i].z + pl.d) / norm;
             if (dist > kPlanarTolerance * size)
                 throw InputError(field + ".vertices[" + std::to_string(i) + "]",
-                                 "is " + num(dist, 3) +
+                                 "is " + given(dist, 3) +
                                      " off the plane of the others: a polygon must be planar");
         }
     }

@@ -95,6 +95,8 @@ std::vector<FieldGrade> grade(const ExamProblem& p, const json& given, double to
 
 json parse_answer(const std::string& text) {
     std::string t = text;
+    // A minus sign copied from the sandbox's own text (U+2212) reads as '-'.
+    for (std::size_t at; (at = t.find(kMinus)) != std::string::npos;) t.replace(at, 3, "-");
     t.erase(0, t.find_first_not_of(" \t\r\n"));
     t.erase(t.find_last_not_of(" \t\r\n") + 1);
     std::string lower = t;

@@ -123,7 +123,7 @@ std::string describe(const json& v) {
 double as_number(const json& v, const std::string& field) {
     if (!v.is_number()) throw InputError(field, "must be a number, got " + describe(v));
     double d = v.get<double>();
-    if (!std::isfinite(d)) throw InputError(field, "must be a finite number, got " + num(d));
+    if (!std::isfinite(d)) throw InputError(field, "must be a finite number, got " + given(d));
     return d;
 }
 

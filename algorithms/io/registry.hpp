@@ -108,7 +108,7 @@ Algorithm make_algorithm() {
             Rng rng(seed);
             return JsonIo<A>::input_json(A::exam_input(rng));
         };
-        a.question = [](const json& j) { return A::question(JsonIo<A>::input(j)); };
+        a.question = [](const json& j) { return text_minus(A::question(JsonIo<A>::input(j))); };
         if constexpr (HasInputAnswers<A>)
             a.answer_fields = [](const json& j) { return A::answer_fields(JsonIo<A>::input(j)); };
         else

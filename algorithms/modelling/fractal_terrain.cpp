@@ -253,9 +253,9 @@ namespace {
 
 void check_value(double x, const std::string& field) {
     if (!std::isfinite(x))
-        throw InputError(field, "must be a finite number (got " + num(x) + ")");
+        throw InputError(field, "must be a finite number (got " + given(x) + ")");
     if (std::fabs(x) > FractalTerrain::kMaxValue)
-        throw InputError(field, "is too large (" + num(x) + "): at most 1e12 in size");
+        throw InputError(field, "is too large (" + given(x) + "): at most 1e12 in size");
 }
 
 }  // namespace
@@ -269,12 +269,12 @@ void FractalTerrain::validate(const Input& in) {
     check_value(in.amplitude, "amplitude");
     if (!(in.amplitude >= 0))
         throw InputError("amplitude", "must be at least 0: the random offsets' bound at level "
-                                      "1 (got " + num(in.amplitude) + ")");
+                                      "1 (got " + given(in.amplitude) + ")");
     if (!std::isfinite(in.roughness) || in.roughness < 0 || in.roughness > kMaxRoughness)
         throw InputError("roughness",
                          "must be between 0 (the amplitude kept, roughest) and 4 (divided by "
                          "16 a level, smooth): H in a ← a · 2^(−H) (got " +
-                             num(in.roughness) + ")");
+                             given(in.roughness) + ")");
     if (in.method == Method::Triangle) {
         const char* names[3] = {"triangle[0]", "triangle[1]", "triangle[2]"};
         for (int k = 0; k < 3; ++k)
@@ -291,7 +291,7 @@ void FractalTerrain::validate(const Input& in) {
         check_value(in.size, "size");
         if (!(in.size > 0))
             throw InputError("size", "must be positive: the square's side (got " +
-                                         num(in.size) + ")");
+                                         given(in.size) + ")");
         for (int k = 0; k < 4; ++k)
             check_value(in.corners[k], "corners[" + std::to_string(k) + "]");
     }

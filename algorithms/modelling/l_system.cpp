@@ -281,13 +281,13 @@ void LSystem::validate(const Input& in) {
                                             " (got " + std::to_string(in.generations) + ")");
     if (!std::isfinite(in.angle) || std::fabs(in.angle) > 360)
         throw InputError(
-            "angle", "must be a finite angle in degrees, −360 to 360 (got " + num(in.angle) + ")");
+            "angle", "must be a finite angle in degrees, −360 to 360 (got " + given(in.angle) + ")");
     if (!std::isfinite(in.heading) || std::fabs(in.heading) > 360)
         throw InputError("heading", "must be a finite angle in degrees, −360 to 360 (got " +
-                                        num(in.heading) + ")");
+                                        given(in.heading) + ")");
     if (!(in.step > 0 && in.step <= kMaxStep))
         throw InputError("step",
-                         "must be a length above 0 and at most 1e6 (got " + num(in.step) + ")");
+                         "must be a length above 0 and at most 1e6 (got " + given(in.step) + ")");
     // The limit, from the growth counts: refused before a single symbol is rewritten.
     const std::vector<long long> len = growth(in);
     if (len.back() > kMaxLength) {

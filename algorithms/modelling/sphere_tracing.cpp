@@ -175,12 +175,12 @@ void check_point(const std::string& field, glm::dvec3 p) {
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(p[a]) || std::abs(p[a]) > SphereTracing::kMaxCoordinate)
             throw InputError(
-                field, "must be finite numbers of magnitude at most 1e6 (got " + num(p) + ")");
+                field, "must be finite numbers of magnitude at most 1e6 (got " + given(p) + ")");
 }
 
 void check_length(const std::string& field, double v) {
     if (!std::isfinite(v) || v <= 0 || v > SphereTracing::kMaxCoordinate)
-        throw InputError(field, "must be a length above 0 and at most 1e6 (got " + num(v) + ")");
+        throw InputError(field, "must be a length above 0 and at most 1e6 (got " + given(v) + ")");
 }
 
 }  // namespace
@@ -206,7 +206,7 @@ void SphereTracing::validate(const Input& in) {
                 if (s.size.y >= s.size.x)
                     throw InputError(shape_field(i, "minor_radius"),
                                      "must be below the major radius (a ring torus; got r = " +
-                                         num(s.size.y) + ", R = " + num(s.size.x) + ")");
+                                         given(s.size.y) + ", R = " + given(s.size.x) + ")");
                 break;
         }
     }
@@ -216,10 +216,10 @@ void SphereTracing::validate(const Input& in) {
     if (in.direction == glm::dvec3(0.0))
         throw InputError("direction", "must not be the zero vector (a ray needs a direction)");
     if (!std::isfinite(in.epsilon) || in.epsilon <= 0 || in.epsilon > 1)
-        throw InputError("epsilon", "must be above 0 and at most 1 (got " + num(in.epsilon) + ")");
+        throw InputError("epsilon", "must be above 0 and at most 1 (got " + given(in.epsilon) + ")");
     if (!std::isfinite(in.max_distance) || in.max_distance <= 0 || in.max_distance > 1e9)
         throw InputError("max_distance",
-                         "must be above 0 and at most 1e9 (got " + num(in.max_distance) + ")");
+                         "must be above 0 and at most 1e9 (got " + given(in.max_distance) + ")");
     if (in.max_steps < 1 || in.max_steps > kMaxSteps)
         throw InputError("max_steps", "must be 1 to " + std::to_string(kMaxSteps) + " (got " +
                                           std::to_string(in.max_steps) + ")");

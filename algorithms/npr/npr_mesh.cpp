@@ -97,9 +97,9 @@ void validate(const Mesh& m) {
             const std::string at = "vertices[" + std::to_string(i) + "][" + std::to_string(c) + "]";
             if (!std::isfinite(x)) throw InputError(at, "must be a finite number");
             // Newell's products of two coordinates then neither overflow nor underflow.
-            if (std::fabs(x) > 1e50) throw InputError(at, "must be within ±1e50 (got " + num(x) + ")");
+            if (std::fabs(x) > 1e50) throw InputError(at, "must be within ±1e50 (got " + given(x) + ")");
             if (x != 0 && std::fabs(x) < 1e-50)
-                throw InputError(at, "must be 0 or at least 1e-50 in size (got " + num(x) + ")");
+                throw InputError(at, "must be 0 or at least 1e-50 in size (got " + given(x) + ")");
         }
     if (m.faces.empty()) throw InputError("faces", "needs at least one face, got none");
     if (m.faces.size() > kMaxFaces)
@@ -145,7 +145,7 @@ void validate(const Mesh& m) {
             if (d > 1e-6 * size)
                 throw InputError(field() + "[" + std::to_string(i) + "]",
                                  "the face is not planar: vertex " + std::to_string(f[i]) + " lies " +
-                                     num(d, 3) + " off the face's plane (tolerance 1e-6 of its size)");
+                                     given(d, 3) + " off the face's plane (tolerance 1e-6 of its size)");
         }
     }
 }

@@ -83,10 +83,10 @@ void ToonShading::validate(const Input& in) {
     for (std::size_t i = 0; i < in.thresholds.size(); ++i) {
         const double t = in.thresholds[i];
         const std::string at = "thresholds[" + std::to_string(i) + "]";
-        if (!(t > 0 && t < 1)) throw InputError(at, "must lie strictly between 0 and 1 (got " + num(t) + ")");
+        if (!(t > 0 && t < 1)) throw InputError(at, "must lie strictly between 0 and 1 (got " + given(t) + ")");
         if (i > 0 && !(t > in.thresholds[i - 1]))
             throw InputError(at, "must be greater than the threshold before it (" +
-                                     num(in.thresholds[i - 1]) + "), got " + num(t));
+                                     given(in.thresholds[i - 1]) + "), got " + given(t));
     }
     if (!in.colours.empty() && in.colours.size() != n)
         throw InputError("colours", "needs one colour per band: " + std::to_string(n) + ", got " +
@@ -95,7 +95,7 @@ void ToonShading::validate(const Input& in) {
         for (int c = 0; c < 3; ++c)
             if (!(in.colours[b][c] >= 0 && in.colours[b][c] <= 1))
                 throw InputError("colours[" + std::to_string(b) + "][" + std::to_string(c) + "]",
-                                 "must be between 0 and 1 (got " + num(in.colours[b][c]) + ")");
+                                 "must be between 0 and 1 (got " + given(in.colours[b][c]) + ")");
 }
 
 ToonShading::State ToonShading::start(const Input& in) {

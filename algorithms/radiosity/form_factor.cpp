@@ -181,8 +181,8 @@ void FormFactor::validate(const Input& in) {
     if (!is_point(in)) {
         const double ratio = area(in.from) / area(in.to);
         if (!std::isfinite(ratio) || !(ratio > 0) || !std::isfinite(1 / ratio))
-            throw InputError("to", "the areas A_i = " + num(area(in.from)) +
-                                       " and A_j = " + num(area(in.to)) +
+            throw InputError("to", "the areas A_i = " + given(area(in.from)) +
+                                       " and A_j = " + given(area(in.to)) +
                                        " differ too much for A_i / A_j to be a double");
     }
 }

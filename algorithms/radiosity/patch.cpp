@@ -196,9 +196,9 @@ void check_point(const dvec3& v, const std::string& field) {
     for (int i = 0; i < 3; ++i) {
         const std::string f = field + "[" + std::to_string(i) + "]";
         if (!std::isfinite(v[i]))
-            throw InputError(f, "must be a finite number (got " + num(v[i]) + ")");
+            throw InputError(f, "must be a finite number (got " + given(v[i]) + ")");
         if (std::fabs(v[i]) > kMaxCoordinate)
-            throw InputError(f, "is too large (|" + num(v[i]) +
+            throw InputError(f, "is too large (|" + given(v[i]) +
                                     "| > 1e100): areas and distances would overflow; scale the "
                                     "scene down");
     }
@@ -221,7 +221,7 @@ void validate_patch(const Patch& p, const std::string& field, bool allow_point) 
             if (std::fabs(glm::dot(p.b, p.c)) > 1e-9 * lu * lv)
                 throw InputError(field + ".edge_v",
                                  "must be perpendicular to edge_u (edge_u · edge_v = " +
-                                     num(glm::dot(p.b, p.c)) +
+                                     given(glm::dot(p.b, p.c)) +
                                      "): a rectangle, not a "
                                      "parallelogram");
             return;
@@ -239,7 +239,7 @@ void validate_patch(const Patch& p, const std::string& field, bool allow_point) 
                     throw InputError(field + ".radius",
                                      "is too large (> 1e100); scale the scene down");
                 if (!(p.radius > 0) || !(area(p) > 0))
-                    throw InputError(field + ".radius", "must be positive (got " + num(p.radius) +
+                    throw InputError(field + ".radius", "must be positive (got " + given(p.radius) +
                                                             "): a disc of radius 0 has zero area");
             } else if (!allow_point) {
                 throw InputError(field,

@@ -115,7 +115,7 @@ bool finite3(const dvec3& v) {
 }
 
 void check_range(double v, double lo, double hi, const std::string& field, const char* why) {
-    if (!(v >= lo && v <= hi)) throw InputError(field, std::string(why) + " (got " + num(v) + ")");
+    if (!(v >= lo && v <= hi)) throw InputError(field, std::string(why) + " (got " + given(v) + ")");
 }
 
 struct CameraFrame {
@@ -157,12 +157,12 @@ void Radiosity::validate(const Input& in) {
         validate_patch(s.patch, f, false);
         if (!finite3(s.emission) || s.emission.x < 0 || s.emission.y < 0 || s.emission.z < 0)
             throw InputError(f + ".emission", "must be finite and non-negative in every channel (got " +
-                                                  num(s.emission) + ")");
+                                                  given(s.emission) + ")");
         if (max_abs(s.emission) > 1e100)  // B stays finite: it is at most E / (1 − ρ F)
             throw InputError(f + ".emission", "must be at most 1e100 in every channel (got " +
-                                                  num(s.emission) + ")");
+                                                  given(s.emission) + ")");
         if (!finite3(s.reflectance))
-            throw InputError(f + ".reflectance", "must be finite (got " + num(s.reflectance) + ")");
+            throw InputError(f + ".reflectance", "must be finite (got " + given(s.reflectance) + ")");
         for (int c = 0; c < 3; ++c)
             check_range(s.reflectance[c], 0, 1, f + ".reflectance",
                         "must lie in [0, 1] in every channel: a surface cannot reflect more light "
@@ -181,7 +181,7 @@ void Radiosity::validate(const Input& in) {
         throw InputError("form_factors.rays", "must be from 1 to " + std::to_string(kMaxRays) +
                                                   " (got " + std::to_string(in.rays) + ")");
     if (!(in.tolerance > 0) || !std::isfinite(in.tolerance))
-        throw InputError("tolerance", "must be a positive number (got " + num(in.tolerance) + ")");
+        throw InputError("tolerance", "must be a positive number (got " + given(in.tolerance) + ")");
     if (in.max_steps < 1 || in.max_steps > kMaxSteps)
         throw InputError("max_steps", "must be from 1 to " + std::to_string(kMaxSteps) + " (got " +
                                           std::to_string(in.max_steps) + ")");
@@ -196,7 +196,7 @@ void Radiosity::validate(const Input& in) {
     if (!(max_abs(c.up) > 0) || !(along > 1e-9))
         throw InputError("camera.up", "must not be zero or along the view direction");
     if (!(c.fov_deg > 0 && c.fov_deg < 170))
-        throw InputError("camera.fov_deg", "must lie in (0, 170) degrees (got " + num(c.fov_deg) + ")");
+        throw InputError("camera.fov_deg", "must lie in (0, 170) degrees (got " + given(c.fov_deg) + ")");
     if (c.width < 1 || c.width > kMaxImage)
         throw InputError("camera.width", "must be from 1 to 64 pixels (got " +
                                              std::to_string(c.width) + ")");
@@ -431,7 +431,7 @@ void Radiosity::check_convergence(const Input&, const Scene3& sc, const std::vec
                 throw InputError(surface_field(sc, int(i), "reflectance"),
                                  std::string("ρ = 1 in the ") + channel_name(c) +
                                      " channel on a patch whose form factors sum to " +
-                                     num(S[i], 9) +
+                                     given(S[i], 9) +
                                      " > 1: the light would grow on every bounce; use ρ < 1 or "
                                      "more accurate form factors");
             if (kept < 1 - 1e-12) ok[i] = 1, queue.push_back(i);

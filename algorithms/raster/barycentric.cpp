@@ -167,12 +167,12 @@ std::string coordinate_name(const std::string& base, std::size_t k, int c) {
 }
 
 void check_coordinate(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
     if (std::fabs(v) > Barycentric::kMaxCoordinate)
-        throw InputError(field, "must lie within ±1e100 (got " + num(v) +
+        throw InputError(field, "must lie within ±1e100 (got " + given(v) +
                                     "): products of coordinates must not overflow");
     if (v != 0 && std::fabs(v) < Barycentric::kMinCoordinate)
-        throw InputError(field, "must be 0 or at least 1e-100 in size (got " + num(v) +
+        throw InputError(field, "must be 0 or at least 1e-100 in size (got " + given(v) +
                                     "): products of coordinates must not underflow");
 }
 
@@ -266,8 +266,8 @@ void Barycentric::validate(const Input& in) {
     if (2 * std::fabs(t.area) < kMinShape * longest)
         throw InputError("triangle",
                          "is degenerate: A, B and C lie (nearly) on one line — its height is " +
-                             num(2 * std::fabs(t.area) / std::sqrt(longest), 4) +
-                             ", below 1e-9 of its longest edge (" + num(std::sqrt(longest), 4) +
+                             given(2 * std::fabs(t.area) / std::sqrt(longest), 4) +
+                             ", below 1e-9 of its longest edge (" + given(std::sqrt(longest), 4) +
                              "), so the weights would be ratios of nearly vanishing areas");
 }
 

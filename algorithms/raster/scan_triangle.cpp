@@ -93,7 +93,7 @@ std::size_t expected_pixels(const std::array<dvec2, 3>& v, long long width, long
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 }  // namespace
@@ -167,11 +167,11 @@ void ScanTriangle::validate(const Input& in) {
             check_finite(v, field);
             if (std::fabs(v) > kMaxCoordinate)
                 throw InputError(field,
-                                 "must lie within ±1e9 pixels of the origin (got " + num(v) + ")");
+                                 "must lie within ±1e9 pixels of the origin (got " + given(v) + ")");
             // The exact inside test multiplies coordinates; far below a pixel they could underflow.
             if (v != 0 && std::fabs(v) < 1e-100)
                 throw InputError(field,
-                                 "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
+                                 "must be 0 or at least 1e-100 in size (got " + given(v) + ")");
         }
     if (!in.colors.empty() && in.colors.size() != 3)
         throw InputError("colors", "must give one colour per vertex, 3 in all (got " +
@@ -182,7 +182,7 @@ void ScanTriangle::validate(const Input& in) {
                 "colors[" + std::to_string(k) + "][" + std::to_string(d) + "]";
             const double v = in.colors[k][d];
             check_finite(v, field);
-            if (v < 0 || v > 1) throw InputError(field, "must be from 0 to 1 (got " + num(v) + ")");
+            if (v < 0 || v > 1) throw InputError(field, "must be from 0 to 1 (got " + given(v) + ")");
         }
 }
 

@@ -27,12 +27,12 @@ const char* height_kind_id(HeightKind k) {
 void validate_height(const HeightField& h, const std::string& field) {
     if (!(std::fabs(h.amplitude) <= 1e6))
         throw InputError(field + ".amplitude", "must be a number of magnitude at most 1e6 (got " +
-                                                   num(h.amplitude) + ")");
+                                                   given(h.amplitude) + ")");
     if (!(h.step >= 1e-9 && h.step <= 0.1))
         throw InputError(field + ".step",
                          "must be between 1e-9 and 0.1: the (u, v) step of the finite "
                          "differences B_u, B_v (got " +
-                             num(h.step) + ")");
+                             given(h.step) + ")");
     switch (h.kind) {
         case HeightKind::Sines:
         case HeightKind::Noise:
@@ -40,7 +40,7 @@ void validate_height(const HeightField& h, const std::string& field) {
                 if (!(std::fabs(h.frequency[k]) <= 1e6))
                     throw InputError(field + ".frequency[" + std::to_string(k) + "]",
                                      "must be a number of magnitude at most 1e6 (got " +
-                                         num(h.frequency[k]) + ")");
+                                         given(h.frequency[k]) + ")");
             return;
         case HeightKind::Image:
             validate_texture(h.image, field + ".image");

@@ -71,7 +71,7 @@ void BumpMap::validate(const Input& in) {
         if (!std::isfinite(in.point[i]) || std::fabs(in.point[i]) > 1e12)
             throw InputError(
                 "point[" + std::to_string(i) + "]",
-                "must be a finite number of magnitude at most 1e12 (got " + num(in.point[i]) + ")");
+                "must be a finite number of magnitude at most 1e12 (got " + given(in.point[i]) + ")");
     validate_height(in.height, "height");
     if (in.has_light) {
         for (int i = 0; i < 3; ++i)

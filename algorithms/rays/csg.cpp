@@ -116,14 +116,14 @@ void validate_csg(const CsgTree& t) {
             const std::string k = "[" + std::to_string(i) + "]";
             if (!std::isfinite(n.box.min[i]))
                 throw InputError(prim + ".min" + k,
-                                 "must be a finite number (got " + num(n.box.min[i]) + ")");
+                                 "must be a finite number (got " + given(n.box.min[i]) + ")");
             if (!std::isfinite(n.box.max[i]))
                 throw InputError(prim + ".max" + k,
-                                 "must be a finite number (got " + num(n.box.max[i]) + ")");
+                                 "must be a finite number (got " + given(n.box.max[i]) + ")");
             if (!(n.box.min[i] < n.box.max[i]))
                 throw InputError(prim + ".max" + k,
-                                 "must be greater than min" + k + " (" + num(n.box.max[i]) +
-                                     " ≤ " + num(n.box.min[i]) + "): the box is empty");
+                                 "must be greater than min" + k + " (" + given(n.box.max[i]) +
+                                     " ≤ " + given(n.box.min[i]) + "): the box is empty");
         }
     }
     const std::vector<dmat4> w = world_from_nodes(t);

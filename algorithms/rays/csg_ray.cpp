@@ -168,7 +168,7 @@ void check_point(dvec3 v, const std::string& field) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(v[i]))
             throw InputError(field + "[" + std::to_string(i) + "]",
-                             "must be a finite number (got " + num(v[i]) + ")");
+                             "must be a finite number (got " + given(v[i]) + ")");
 }
 
 double max_abs(dvec3 v) {
@@ -187,9 +187,9 @@ void CsgRay::validate(const Input& in) {
     const double dw = max_abs(in.direction), ow = max_abs(in.origin);
     if (!(dw >= 1e-100 && dw <= 1e100))
         throw InputError("direction", "is too small or too large for double precision (largest "
-                                      "component " + num(dw) + ")");
+                                      "component " + given(dw) + ")");
     if (!(ow <= 1e100))
-        throw InputError("origin", "is too far away for double precision (" + num(ow) + ")");
+        throw InputError("origin", "is too far away for double precision (" + given(ow) + ")");
     // ... and so must it be in every leaf's frame: a transform that takes it out of range is
     // the leaf's fault.
     const PreparedCsg p = prepare_csg(in.tree);
@@ -203,8 +203,8 @@ void CsgRay::validate(const Input& in) {
              (!std::isfinite(q.a) || !std::isfinite(q.b) || !std::isfinite(q.c) ||
               !std::isfinite(q.b * q.b - 4 * q.a * q.c))))
             throw InputError(n.path, "is placed so that the ray is too large or too small for "
-                                     "double precision in its frame (E_m = " + num(q.origin) +
-                                     ", d_m = " + num(q.direction) + ")");
+                                     "double precision in its frame (E_m = " + given(q.origin) +
+                                     ", d_m = " + given(q.direction) + ")");
     }
 }
 

@@ -23,7 +23,7 @@ constexpr double kMaxCoordinate = 1e12;  // as rt::kMaxCoordinate
 void check_finite(double x, const std::string& field) {
     if (!std::isfinite(x) || std::fabs(x) > kMaxCoordinate)
         throw InputError(field,
-                         "must be a finite number of magnitude at most 1e12 (got " + num(x) + ")");
+                         "must be a finite number of magnitude at most 1e12 (got " + given(x) + ")");
 }
 
 void check_point(dvec3 p, const std::string& field) {
@@ -54,7 +54,7 @@ void validate(const SphereParams& p, const std::string& field) {
     check_point(p.center, field + ".center");
     check_finite(p.radius, field + ".radius");
     if (!(p.radius > 0))
-        throw InputError(field + ".radius", "must be positive (got " + num(p.radius) + ")");
+        throw InputError(field + ".radius", "must be positive (got " + given(p.radius) + ")");
     check_count(p.segments, 3, kMaxSphereSegments, field + ".segments");
 }
 
@@ -65,19 +65,19 @@ void validate(const TerrainParams& p, const std::string& field) {
         check_finite(p.size[k], f);
         if (!(p.size[k] > 0))
             throw InputError(f, "must be positive: the terrain's extent along " +
-                                    std::string(k == 0 ? "x" : "z") + " (got " + num(p.size[k]) +
+                                    std::string(k == 0 ? "x" : "z") + " (got " + given(p.size[k]) +
                                     ")");
     }
     check_count(p.resolution, 1, kMaxTerrainResolution, field + ".resolution");
     check_finite(p.height, field + ".height");
     if (!(p.height >= 0))
         throw InputError(field + ".height",
-                         "must be at least 0: the largest |height| (got " + num(p.height) + ")");
+                         "must be at least 0: the largest |height| (got " + given(p.height) + ")");
     if (!(p.roughness >= 0 && p.roughness <= 1))
         throw InputError(field + ".roughness",
                          "must be between 0 (smooth) and 1 (rough): the amplitude's factor per "
                          "level (got " +
-                             num(p.roughness) + ")");
+                             given(p.roughness) + ")");
 }
 
 void validate(const PatchParams& p, const std::string& field) {

@@ -143,12 +143,12 @@ void validate_solid(const SolidTexture& t, const std::string& field) {
             if (!std::isfinite(t.colors[k][c]) || t.colors[k][c] < 0 || t.colors[k][c] > 1e6)
                 throw InputError(field + ".colors[" + std::to_string(k) + "]",
                                  "must be a colour with components in [0, 1e6] (got " +
-                                     num(t.colors[k], 6) + ")");
+                                     given(t.colors[k], 6) + ")");
     auto length = [&](double v, const char* key, const char* what) {
         if (!(v >= 1e-9 && v <= 1e12))
             throw InputError(field + "." + key, std::string("must be a length between 1e-9 and "
                                                             "1e12: ") +
-                                                    what + " (got " + num(v) + ")");
+                                                    what + " (got " + given(v) + ")");
     };
     switch (t.kind) {
         case SolidKind::Checker:
@@ -163,16 +163,16 @@ void validate_solid(const SolidTexture& t, const std::string& field) {
     const double m = std::max({std::fabs(t.axis.x), std::fabs(t.axis.y), std::fabs(t.axis.z)});
     if (!(m >= 1e-150) || !std::isfinite(m))
         throw InputError(field + ".axis",
-                         "must be a nonzero finite direction (got " + num(t.axis) + ")");
+                         "must be a nonzero finite direction (got " + given(t.axis) + ")");
     if (!uses_noise(t.kind)) return;
     if (!(std::fabs(t.amplitude) <= 1e6))
         throw InputError(field + ".amplitude", "must be a number of magnitude at most 1e6 (got " +
-                                                   num(t.amplitude) + ")");
+                                                   given(t.amplitude) + ")");
     if (!(t.frequency > 1e-9 && t.frequency <= 1e6))
         throw InputError(field + ".frequency",
                          "must be between 1e-9 and 1e6 lattice cells per "
                          "unit (got " +
-                             num(t.frequency) + ")");
+                             given(t.frequency) + ")");
     if (t.kind == SolidKind::Marble && (t.octaves < 1 || t.octaves > kMaxOctaves))
         throw InputError(field + ".octaves", "must be between 1 and " +
                                                  std::to_string(kMaxOctaves) + " (got " +

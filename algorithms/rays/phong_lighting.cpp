@@ -42,7 +42,7 @@ void check_finite3(dvec3 v, const std::string& field) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(v[i]))
             throw InputError(field + "[" + std::to_string(i) + "]",
-                             "must be a finite number (got " + num(v[i]) + ")");
+                             "must be a finite number (got " + given(v[i]) + ")");
 }
 
 // A colour or coefficient: finite and ≥ 0 on every channel. A scalar names no channel.
@@ -50,11 +50,11 @@ void check_color(const Color& c, bool rgb, const std::string& field, const char*
     for (int i = 0; i < 3; ++i) {
         const std::string f = rgb ? field + "[" + std::to_string(i) + "]" : field;
         if (!std::isfinite(c[i]))
-            throw InputError(f, "must be a finite number (got " + num(c[i]) + ")");
+            throw InputError(f, "must be a finite number (got " + given(c[i]) + ")");
         if (c[i] < 0)
             throw InputError(
-                f, std::string("must not be negative: ") + what + " (got " + num(c[i]) + ")");
-        if (c[i] > 1e100) throw InputError(f, "is too large (got " + num(c[i]) + ")");
+                f, std::string("must not be negative: ") + what + " (got " + given(c[i]) + ")");
+        if (c[i] > 1e100) throw InputError(f, "is too large (got " + given(c[i]) + ")");
     }
 }
 
@@ -132,7 +132,7 @@ void PhongLighting::validate(const Input& in) {
                          "must differ from point: the view direction v = (E − P)/|E − P| "
                          "is undefined when the eye is at the point");
     if (!std::isfinite(glm::length(in.normal) + 1))
-        throw InputError("normal", "is too large to normalise (got " + num(in.normal) + ")");
+        throw InputError("normal", "is too large to normalise (got " + given(in.normal) + ")");
     if (!std::isfinite(glm::length(in.eye - in.point))) {
         // Name the field that is out of range: the one with the larger coordinate.
         const auto big = [](const dvec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); };
@@ -155,7 +155,7 @@ void PhongLighting::validate(const Input& in) {
             throw InputError(f + ".position",
                              "is too far from or too close to the point for "
                              "double precision (distance " +
-                                 num(r) + ")");
+                                 given(r) + ")");
     }
 }
 
@@ -166,13 +166,13 @@ void PhongLighting::validate_lighting(const Input& in) {
     check_color(in.material.ks, in.rgb, "material.ks", "a reflection coefficient");
     const double p = in.material.shininess;
     if (!std::isfinite(p))
-        throw InputError("material.shininess", "must be a finite number (got " + num(p) + ")");
+        throw InputError("material.shininess", "must be a finite number (got " + given(p) + ")");
     if (p < 0)
         throw InputError("material.shininess",
-                         "must not be negative (got " + num(p) +
+                         "must not be negative (got " + given(p) +
                              "): (r·v)^p with p < 0 would make the highlight brightest away from "
                              "the mirror direction and infinite at r·v = 0");
-    if (p > 1e6) throw InputError("material.shininess", "is too large (got " + num(p) + ")");
+    if (p > 1e6) throw InputError("material.shininess", "is too large (got " + given(p) + ")");
     for (std::size_t i = 0; i < in.lights.size(); ++i) {
         const Light& L = in.lights[i];
         const std::string f = "lights[" + std::to_string(i) + "]";
@@ -191,9 +191,9 @@ void PhongLighting::validate_lighting(const Input& in) {
         for (int k = 0; k < 3; ++k) {
             const std::string af = f + ".attenuation[" + std::to_string(k) + "]";
             if (!std::isfinite(L.attenuation[k]))
-                throw InputError(af, "must be a finite number (got " + num(L.attenuation[k]) + ")");
+                throw InputError(af, "must be a finite number (got " + given(L.attenuation[k]) + ")");
             if (L.attenuation[k] < 0)
-                throw InputError(af, "must not be negative (got " + num(L.attenuation[k]) + ")");
+                throw InputError(af, "must not be negative (got " + given(L.attenuation[k]) + ")");
         }
         if (L.attenuation == dvec3(0.0))
             throw InputError(f + ".attenuation",

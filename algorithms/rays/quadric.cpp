@@ -119,15 +119,15 @@ void validate_quadric(const Quadric& s, const std::string& prefix) {
     for (const NamedParam& np : params_of(s)) {
         const std::string field = prefix + ".params." + np.name;
         if (!std::isfinite(np.value))
-            throw InputError(field, "must be a finite number (got " + num(np.value) + ")");
+            throw InputError(field, "must be a finite number (got " + given(np.value) + ")");
         if (np.value <= 0)
             throw InputError(
-                field, "must be positive: it is a semi-axis length (got " + num(np.value) + ")");
+                field, "must be positive: it is a semi-axis length (got " + given(np.value) + ")");
         // 1/v² must be a normal, finite number.
         const double inv = 1 / (np.value * np.value);
         if (!std::isfinite(inv) || inv == 0 || !std::isnormal(np.value * np.value))
             throw InputError(field,
-                             "is too large or too small to square (got " + num(np.value) + ")");
+                             "is too large or too small to square (got " + given(np.value) + ")");
     }
     const glm::dmat4& m = s.world_from_model;  // m[column][row]
     for (int r = 0; r < 4; ++r)
@@ -135,12 +135,12 @@ void validate_quadric(const Quadric& s, const std::string& prefix) {
             if (!std::isfinite(m[c][r]))
                 throw InputError(
                     prefix + ".transform[" + std::to_string(r) + "][" + std::to_string(c) + "]",
-                    "must be a finite number (got " + num(m[c][r]) + ")");
+                    "must be a finite number (got " + given(m[c][r]) + ")");
     if (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1)
         throw InputError(prefix + ".transform[3]",
                          "must be [0, 0, 0, 1]: the model transform must be affine (got [" +
-                             num(m[0][3]) + ", " + num(m[1][3]) + ", " + num(m[2][3]) + ", " +
-                             num(m[3][3]) + "])");
+                             given(m[0][3]) + ", " + given(m[1][3]) + ", " + given(m[2][3]) + ", " +
+                             given(m[3][3]) + "])");
     const dmat3 linear(m);
     const double det = glm::determinant(linear);
     // Hadamard's bound: |det| ≤ |col0||col1||col2|. A determinant far below it is a matrix
@@ -148,7 +148,7 @@ void validate_quadric(const Quadric& s, const std::string& prefix) {
     const double bound = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
     if (!(std::fabs(det) > 1e-12 * bound) || !std::isfinite(det))
         throw InputError(prefix + ".transform",
-                         "is singular (determinant " + num(det) +
+                         "is singular (determinant " + given(det) +
                              "): it flattens space, so rays cannot be carried into model space");
     const dmat3 inv = glm::inverse(linear);
     for (int c = 0; c < 3; ++c)
@@ -156,12 +156,12 @@ void validate_quadric(const Quadric& s, const std::string& prefix) {
             if (!std::isfinite(inv[c][r]))
                 throw InputError(prefix + ".transform", "cannot be inverted in double precision");
     if (std::isnan(s.zmin) || s.zmin == Quadric::kInf)
-        throw InputError(prefix + ".zmin", "must be a finite number (got " + num(s.zmin) + ")");
+        throw InputError(prefix + ".zmin", "must be a finite number (got " + given(s.zmin) + ")");
     if (std::isnan(s.zmax) || s.zmax == -Quadric::kInf)
-        throw InputError(prefix + ".zmax", "must be a finite number (got " + num(s.zmax) + ")");
+        throw InputError(prefix + ".zmax", "must be a finite number (got " + given(s.zmax) + ")");
     if (!(s.zmin < s.zmax))
-        throw InputError(prefix + ".zmax", "must be greater than zmin (" + num(s.zmax) + " ≤ " +
-                                               num(s.zmin) + "): the slab is empty");
+        throw InputError(prefix + ".zmax", "must be greater than zmin (" + given(s.zmax) + " ≤ " +
+                                               given(s.zmin) + "): the slab is empty");
 }
 
 // ---- [intersection] -------------------------------------------------------------------------

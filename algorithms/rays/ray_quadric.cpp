@@ -121,7 +121,7 @@ void check_point(dvec3 v, const std::string& field) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(v[i]))
             throw InputError(field + "[" + std::to_string(i) + "]",
-                             "must be a finite number (got " + num(v[i]) + ")");
+                             "must be a finite number (got " + given(v[i]) + ")");
 }
 
 }  // namespace
@@ -209,14 +209,14 @@ void RayQuadric::validate(const Input& in) {
         throw InputError("direction",
                          "is too small or too large for double precision in model "
                          "space (largest component " +
-                             num(d) + ")");
+                             given(d) + ")");
     if (!(o <= 1e100))
         throw InputError("origin",
-                         "is too far away for double precision in model space (" + num(o) + ")");
+                         "is too far away for double precision in model space (" + given(o) + ")");
     if (!std::isfinite(q.a) || !std::isfinite(q.b) || !std::isfinite(q.c) ||
         !std::isfinite(q.b * q.b - 4 * q.a * q.c))
         throw InputError("origin", "and direction give a quadratic that overflows (a = " +
-                                       num(q.a) + ", b = " + num(q.b) + ", c = " + num(q.c) + ")");
+                                       given(q.a) + ", b = " + given(q.b) + ", c = " + given(q.c) + ")");
 }
 
 RayQuadric::State RayQuadric::start(const Input& in) {

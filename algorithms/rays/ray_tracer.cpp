@@ -180,7 +180,7 @@ void RayTracer::validate(const Input& in) {
                              "must not be the zero vector: a ray needs a direction");
         if (!(m >= 1e-150))
             throw InputError("stepping.ray.direction",
-                             "is too short (largest component " + num(m) +
+                             "is too short (largest component " + given(m) +
                                  " < 1e-150): t is in units of the direction");
         return;
     }
@@ -189,7 +189,7 @@ void RayTracer::validate(const Input& in) {
         throw InputError("stepping.pixel", "must lie on the " + std::to_string(c.width) + "×" +
                                                std::to_string(c.height) +
                                                " screen: 0 ≤ x < width, 0 ≤ y < height (got " +
-                                               num(in.pixel) + ")");
+                                               given(in.pixel) + ")");
 }
 
 RayTracer::State RayTracer::start(const Input& in) {

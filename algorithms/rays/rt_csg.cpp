@@ -20,7 +20,7 @@ void validate_csg_object(const Object& o) {
         const glm::dvec3 at(csg_world_from_leaf(o.csg, static_cast<int>(k))[3]);
         for (int i = 0; i < 3; ++i)
             if (std::fabs(at[i]) > kMaxCoordinate)
-                throw InputError(n.path, "is placed at " + num(at) +
+                throw InputError(n.path, "is placed at " + given(at) +
                                              ", beyond the scene's coordinate limit 1e12");
         if (n.kind == CsgPrimitive::Box) {
             check_coordinates(n.box.min, n.path + ".primitive.min");

@@ -30,7 +30,7 @@ void check_colour(const Color& c, const std::string& field) {
     for (int k = 0; k < 3; ++k)
         if (!std::isfinite(c[k]) || c[k] < 0 || c[k] > 1e6)
             throw InputError(
-                field, "must be a colour with components in [0, 1e6] (got " + num(c, 6) + ")");
+                field, "must be a colour with components in [0, 1e6] (got " + given(c, 6) + ")");
 }
 
 void check_nonzero(dvec3 v, const std::string& field, const char* what) {
@@ -38,7 +38,7 @@ void check_nonzero(dvec3 v, const std::string& field, const char* what) {
     if (m == 0) throw InputError(field, std::string("must not be the zero vector: it is ") + what);
     if (!(m >= 1e-150))
         throw InputError(
-            field, std::string("is too short to give a direction (largest component ") + num(m) +
+            field, std::string("is too short to give a direction (largest component ") + given(m) +
                        " < 1e-150): it is " + what);
 }
 
@@ -49,7 +49,7 @@ void check_coordinates(dvec3 p, const std::string& field) {
         if (!std::isfinite(p[k]) || std::fabs(p[k]) > kMaxCoordinate)
             throw InputError(
                 field + "[" + std::to_string(k) + "]",
-                "must be a finite number of magnitude at most 1e12 (got " + num(p[k]) + ")");
+                "must be a finite number of magnitude at most 1e12 (got " + given(p[k]) + ")");
 }
 
 Distribution distribution(const Scene& s) {
@@ -140,11 +140,11 @@ void validate(const Scene& s) {
     const dvec3 wv = unit(view), wu = unit(c.up);
     if (glm::length(glm::cross(wv, wu)) < 1e-9)
         throw InputError("camera.up", "must not be parallel to the view direction center − eye " +
-                                          num(view, 4) + ": the screen's orientation is undefined");
+                                          given(view, 4) + ": the screen's orientation is undefined");
     if (!(c.fov_y_deg >= 0.01 && c.fov_y_deg <= 179))
         throw InputError(
             "camera.fov_y_deg",
-            "must be a field of view between 0.01° and 179° (got " + num(c.fov_y_deg) + ")");
+            "must be a field of view between 0.01° and 179° (got " + given(c.fov_y_deg) + ")");
     if (c.width < 1 || c.height < 1)
         throw InputError("camera.size", "must be at least 1×1 pixels (got " +
                                             std::to_string(c.width) + "×" +
@@ -171,14 +171,14 @@ void validate(const Scene& s) {
                              std::to_string(spp) + ")");
     if (!(c.aperture >= 0 && c.aperture <= 1e6))
         throw InputError("camera.aperture",
-                         "must be a lens radius between 0 and 1e6 (got " + num(c.aperture) + ")");
+                         "must be a lens radius between 0 and 1e6 (got " + given(c.aperture) + ")");
     if (!(c.focal_distance >= 0 && c.focal_distance <= kMaxCoordinate))
         throw InputError("camera.focal_distance",
                          "must be a distance between 0 (the look-at point's) and 1e12 (got " +
-                             num(c.focal_distance) + ")");
+                             given(c.focal_distance) + ")");
     if (!(c.shutter >= 0 && c.shutter <= 1e6))
         throw InputError("camera.shutter",
-                         "must be a time span between 0 and 1e6 (got " + num(c.shutter) + ")");
+                         "must be a time span between 0 and 1e6 (got " + given(c.shutter) + ")");
 
     if (s.materials.empty()) throw InputError("materials", "must list at least one material");
     for (std::size_t i = 0; i < s.materials.size(); ++i) {
@@ -191,14 +191,14 @@ void validate(const Scene& s) {
         check_colour(m.kt, f + ".kt");
         if (!(m.shininess >= 0 && m.shininess <= 1e4))
             throw InputError(f + ".shininess", "must be an exponent between 0 and 10000 (got " +
-                                                   num(m.shininess) + ")");
+                                                   given(m.shininess) + ")");
         if (!(m.ior >= 0.01 && m.ior <= 100))
             throw InputError(f + ".ior", "must be a refraction index between 0.01 and 100 (got " +
-                                             num(m.ior) + ")");
+                                             given(m.ior) + ")");
         if (!(m.gloss >= 0 && m.gloss <= 1e6))
             throw InputError(
                 f + ".gloss",
-                "must be a Phong exponent between 0 (a mirror) and 1e6 (got " + num(m.gloss) + ")");
+                "must be a Phong exponent between 0 (a mirror) and 1e6 (got " + given(m.gloss) + ")");
         if (m.gloss_samples < 1 || m.gloss_samples > kMaxGlossSamples)
             throw InputError(f + ".gloss_samples", "must be between 1 and " +
                                                        std::to_string(kMaxGlossSamples) + " (got " +
@@ -221,7 +221,7 @@ void validate(const Scene& s) {
             if (!(a.x >= 0 && a.y >= 0 && a.z >= 0 && a.x <= 1e6 && a.y <= 1e6 && a.z <= 1e6))
                 throw InputError(
                     f + ".attenuation",
-                    "must be three coefficients c1, c2, c3 in [0, 1e6] (got " + num(a) + ")");
+                    "must be three coefficients c1, c2, c3 in [0, 1e6] (got " + given(a) + ")");
             if (a.x == 0 && a.y == 0 && a.z == 0)
                 throw InputError(f + ".attenuation",
                                  "must not be all zero: 1/(c1 + c2 r + c3 r²) would be infinite");
@@ -237,7 +237,7 @@ void validate(const Scene& s) {
         } else {
             if (!(l.radius >= 0 && l.radius <= kMaxCoordinate))
                 throw InputError(f + ".area.radius",
-                                 "must be between 0 and 1e12 (got " + num(l.radius) + ")");
+                                 "must be between 0 and 1e12 (got " + given(l.radius) + ")");
             check_coordinates(l.normal, f + ".area.normal");
             check_nonzero(l.normal, f + ".area.normal", "the disc's normal");
         }
@@ -248,7 +248,7 @@ void validate(const Scene& s) {
                                         " triangles in its meshes; the limit is " +
                                         std::to_string(kMaxTriangles));
     if (scene_tests(s) > static_cast<double>(kMaxObjects))
-        throw InputError("objects", "costs " + num(scene_tests(s), 4) +
+        throw InputError("objects", "costs " + given(scene_tests(s), 4) +
                                         " ray-object tests per ray (triangles and CSG leaves "
                                         "counted one by one, a mesh as its hierarchy's expected "
                                         "cost); the limit is " +
@@ -260,25 +260,25 @@ void validate(const Scene& s) {
             tree_rays(s) > 64                  ? "settings.max_depth"
             : s.settings.samples_per_pixel > 1 ? "settings.samples_per_pixel"
                                                : "objects",
-            "makes one pixel cost up to " + num(per_pixel, 3) + " ray-object tests (" +
-                std::to_string(s.settings.samples_per_pixel) + " samples × " + num(tree_rays(s)) +
-                " rays per tree × " + num(1 + shadow_rays(s)) + " for the shadow rays × " +
-                num(scene_tests(s)) +
+            "makes one pixel cost up to " + given(per_pixel, 3) + " ray-object tests (" +
+                std::to_string(s.settings.samples_per_pixel) + " samples × " + given(tree_rays(s)) +
+                " rays per tree × " + given(1 + shadow_rays(s)) + " for the shadow rays × " +
+                given(scene_tests(s)) +
                 " objects); the limit is 1e7: use fewer samples, a lower max_depth, or fewer "
                 "objects or lights");
     if (per_pixel > kMaxPixelWork)
         throw InputError(
             tree_rays(s) > 64 ? "settings.max_depth" : "objects",
-            "makes one pixel cost up to " + num(per_pixel, 3) + " ray-object tests (" +
-                num(tree_rays(s)) + " rays per tree × " + std::to_string(s.lights.size() + 1) +
-                " for the lights × " + num(scene_tests(s)) +
+            "makes one pixel cost up to " + given(per_pixel, 3) + " ray-object tests (" +
+                given(tree_rays(s)) + " rays per tree × " + std::to_string(s.lights.size() + 1) +
+                " for the lights × " + given(scene_tests(s)) +
                 " objects); the limit is 1e7: lower max_depth, or use fewer objects or lights");
     const double total = per_pixel * c.width * c.height;
     if (total > kMaxWork)
-        throw InputError("camera.size", "makes the image cost up to " + num(total, 3) +
+        throw InputError("camera.size", "makes the image cost up to " + given(total, 3) +
                                             " ray-object tests (" + std::to_string(c.width) + "×" +
                                             std::to_string(c.height) + " pixels × " +
-                                            num(per_pixel, 3) +
+                                            given(per_pixel, 3) +
                                             " per pixel); the limit is 2e10: use fewer pixels");
     for (const Object& o : s.objects) {
         if (o.material < 0 || o.material >= static_cast<int>(s.materials.size()))
@@ -302,8 +302,8 @@ void validate(const Scene& s) {
                 const dvec3 e1 = o.p1 - o.p0, e2 = o.p2 - o.p0;
                 const double area2 = glm::length(glm::cross(e1, e2));
                 if (!(area2 > 1e-12 * glm::length(e1) * glm::length(e2)) || !(area2 > 0))
-                    throw InputError(o.field, "is degenerate: its corners " + num(o.p0, 4) + ", " +
-                                                  num(o.p1, 4) + ", " + num(o.p2, 4) +
+                    throw InputError(o.field, "is degenerate: its corners " + given(o.p0, 4) + ", " +
+                                                  given(o.p1, 4) + ", " + given(o.p2, 4) +
                                                   " are collinear or coincide (zero area)");
                 if (o.smooth) {
                     const dvec3* n[3] = {&o.n0, &o.n1, &o.n2};

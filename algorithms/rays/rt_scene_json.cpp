@@ -310,7 +310,7 @@ void mesh_objects_from(const Reader& o, const Object& obj, Scene& s) {
         const double det = glm::determinant(A);
         if (!(std::fabs(det) > 1e-300) || !std::isfinite(det))
             throw InputError(o.field("transform"),
-                             "must be invertible: its 3 × 3 part has determinant " + num(det));
+                             "must be invertible: its 3 × 3 part has determinant " + given(det));
         const glm::dmat3 N = glm::transpose(glm::inverse(A));
         for (glm::dvec3& p : m.vertices) p = glm::dvec3(M * glm::dvec4(p, 1.0));
         for (glm::dvec3& n : m.normals) n = N * n;
@@ -328,8 +328,8 @@ void mesh_objects_from(const Reader& o, const Object& obj, Scene& s) {
         if (mesh::degenerate(p0, p1, p2)) {
             if (from_vertices)
                 throw InputError(element(o.field("triangles"), t),
-                                 "is degenerate: its corners " + num(p0, 4) + ", " + num(p1, 4) +
-                                     ", " + num(p2, 4) + " are collinear or coincide (zero area)");
+                                 "is degenerate: its corners " + given(p0, 4) + ", " + given(p1, 4) +
+                                     ", " + given(p2, 4) + " are collinear or coincide (zero area)");
             continue;
         }
         kept.push_back(ix);

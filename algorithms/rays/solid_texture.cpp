@@ -101,8 +101,8 @@ void SolidTextureAlgo::validate(const Input& in) {
             const std::string f = "points[" + std::to_string(i) + "][" + std::to_string(c) + "]";
             if (!std::isfinite(x)) throw InputError(f, "must be a finite number");
             if (!(std::fabs(x * scale) <= limit))
-                throw InputError(f, "is too large for the texture's lattice (" + num(x) + " × " +
-                                        num(scale) + " exceeds " + num(limit) + ")");
+                throw InputError(f, "is too large for the texture's lattice (" + given(x) + " × " +
+                                        given(scale) + " exceeds " + given(limit) + ")");
         }
     if (in.detail < 0 || in.detail >= static_cast<int>(in.points.size()))
         throw InputError("detail", "must be the index of a point, 0 to " +

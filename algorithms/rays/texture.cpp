@@ -68,7 +68,7 @@ void validate_image(const TextureImage& im, const std::string& field) {
                                             std::to_string(k / im.width) +
                                             ") must be a colour with components in [0, 1e6] "
                                             "(got " +
-                                            num(im.texels[k], 6) + ")");
+                                            given(im.texels[k], 6) + ")");
 }
 
 void validate_texture(const Texture& t, const std::string& field) {

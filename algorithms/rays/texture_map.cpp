@@ -91,7 +91,7 @@ void check_point(dvec3 v, const std::string& field) {
         if (!std::isfinite(v[i]) || std::fabs(v[i]) > 1e12)
             throw InputError(
                 field + "[" + std::to_string(i) + "]",
-                "must be a finite number of magnitude at most 1e12 (got " + num(v[i]) + ")");
+                "must be a finite number of magnitude at most 1e12 (got " + given(v[i]) + ")");
 }
 
 }  // namespace
@@ -102,7 +102,7 @@ void TextureMap::validate(const Input& in) {
     validate_texture(in.texture, "texture");
     if (!(in.footprint >= 0 && in.footprint <= 1e6))
         throw InputError("footprint", "must be a size in (u, v) units between 0 and 1e6 (got " +
-                                          num(in.footprint) + ")");
+                                          given(in.footprint) + ")");
     check_on_surface(in.surface, prepare_uv(in.surface), in.point, "point");
 }
 

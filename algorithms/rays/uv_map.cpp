@@ -49,13 +49,13 @@ void validate_uv_surface(const UvSurface& s, const std::string& field) {
             if (a == dvec3(0.0)) throw InputError(field + ".u_axis", "must not be the zero vector");
             if (glm::length(a - glm::dot(a, n) * n) < 1e-6)
                 throw InputError(field + ".u_axis",
-                                 "must not be parallel to the plane's normal " + num(s.normal, 4) +
+                                 "must not be parallel to the plane's normal " + given(s.normal, 4) +
                                      ": it has to give a direction in the plane");
             if (!(s.scale > 1e-9 && s.scale < 1e12))
                 throw InputError(field + ".uv_scale",
                                  "must be a length between 1e-9 and 1e12: the size of one texture "
                                  "repeat (got " +
-                                     num(s.scale) + ")");
+                                     given(s.scale) + ")");
             return;
         }
         case UvKind::Triangle: {
@@ -69,8 +69,8 @@ void validate_uv_surface(const UvSurface& s, const std::string& field) {
             const double area2 = glm::length(glm::cross(e1, e2));
             if (!(area2 > 1e-12 * glm::length(e1) * glm::length(e2)) || !(area2 > 0))
                 throw InputError(field + ".vertices", "is degenerate: the corners " +
-                                                          num(s.p[0], 4) + ", " + num(s.p[1], 4) +
-                                                          ", " + num(s.p[2], 4) +
+                                                          given(s.p[0], 4) + ", " + given(s.p[1], 4) +
+                                                          ", " + given(s.p[2], 4) +
                                                           " are collinear or coincide (zero area)");
             for (int k = 0; k < 3; ++k)
                 for (int c = 0; c < 2; ++c)
@@ -279,12 +279,12 @@ void check_on_surface(const UvSurface& s, const PreparedUv& p, dvec3 P, const st
             const double size = 1 + glm::length(p.e1) + glm::length(p.e2) + glm::length(P);
             if (std::fabs(d) > 1e-9 * size)
                 throw InputError(
-                    field, "must lie in the triangle's plane (it is " + num(d, 4) + " off it)");
+                    field, "must lie in the triangle's plane (it is " + given(d, 4) + " off it)");
             const dvec3 b = uv_frame(p, P).barycentric;
             if (b.x < -1e-9 || b.y < -1e-9 || b.z < -1e-9)
                 throw InputError(
                     field,
-                    "must lie inside the triangle (its barycentric weights are " + num(b, 4) + ")");
+                    "must lie inside the triangle (its barycentric weights are " + given(b, 4) + ")");
             return;
         }
         case UvKind::Quadric: {
@@ -297,11 +297,11 @@ void check_on_surface(const UvSurface& s, const PreparedUv& p, dvec3 P, const st
             if (!(std::fabs(F) <= 1e-9 * size))  // size 0: the cone's apex, on the surface
                 throw InputError(field, std::string("must lie on the ") +
                                             quadric_kind_name(s.quadric.kind) +
-                                            " (F = " + num(F, 4) + " there, not 0)");
+                                            " (F = " + given(F, 4) + " there, not 0)");
             if (m.z < q.zmin - 1e-9 * (1 + std::fabs(q.zmin)) ||
                 m.z > q.zmax + 1e-9 * (1 + std::fabs(q.zmax)))
                 throw InputError(
-                    field, "must lie inside the slab zmin ≤ z ≤ zmax (model z = " + num(m.z) + ")");
+                    field, "must lie inside the slab zmin ≤ z ≤ zmax (model z = " + given(m.z) + ")");
             return;
         }
     }

@@ -58,7 +58,7 @@ const char* image_id(Sampling::ImageKind k) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 }  // namespace
@@ -267,23 +267,23 @@ void Sampling::validate(const Input& in) {
             check_finite(c.phase, f + ".phase");
             if (c.frequency < 0 || c.frequency > kMaxFrequency)
                 throw InputError(f + ".frequency",
-                                 "must be between 0 and 10¹² (got " + num(c.frequency) + ")");
+                                 "must be between 0 and 10¹² (got " + given(c.frequency) + ")");
             if (std::fabs(c.amplitude) > 1e6)
                 throw InputError(f + ".amplitude",
-                                 "must be within ±10⁶ (got " + num(c.amplitude) + ")");
+                                 "must be within ±10⁶ (got " + given(c.amplitude) + ")");
             if (std::fabs(c.phase) > 1e6)
                 throw InputError(f + ".phase",
-                                 "must be within ±10⁶ degrees (got " + num(c.phase) + ")");
+                                 "must be within ±10⁶ degrees (got " + given(c.phase) + ")");
         }
         check_finite(in.rate, "rate");
         check_finite(in.duration, "duration");
         if (in.rate <= 0 || in.rate > kMaxFrequency)
             throw InputError("rate",
-                             "must be positive and at most 10¹² (got " + num(in.rate) + ")");
+                             "must be positive and at most 10¹² (got " + given(in.rate) + ")");
         if (in.duration <= 0)
-            throw InputError("duration", "must be positive (got " + num(in.duration) + ")");
+            throw InputError("duration", "must be positive (got " + given(in.duration) + ")");
         if (in.duration * in.rate > double(kMaxSamples - 1))
-            throw InputError("duration", "gives " + num(std::floor(in.duration * in.rate) + 1) +
+            throw InputError("duration", "gives " + given(std::floor(in.duration * in.rate) + 1) +
                                              " samples at this rate; at most " +
                                              std::to_string(kMaxSamples) + " are allowed");
         // f t must stay small enough for sin to keep its digits: at most 10⁹ cycles over the
@@ -297,9 +297,9 @@ void Sampling::validate(const Input& in) {
                 throw InputError("rate", "is too low for signal[" + std::to_string(k) +
                                              "]: 5 sample periods of it hold more than 10⁹ "
                                              "cycles (got " +
-                                             num(in.rate) + ")");
+                                             given(in.rate) + ")");
             throw InputError("signal[" + std::to_string(k) + "].frequency",
-                             "makes more than 10⁹ cycles over the duration (got " + num(f) + ")");
+                             "makes more than 10⁹ cycles over the duration (got " + given(f) + ")");
         }
         return;
     }
@@ -322,12 +322,12 @@ void Sampling::validate(const Input& in) {
         double(in.width) * in.height * in.samples * in.samples > kMaxPoissonWork)
         throw InputError("supersampling.samples",
                          "makes Poisson dart throwing cost about " +
-                             num(double(in.width) * in.height * in.samples * in.samples) +
+                             given(double(in.width) * in.height * in.samples * in.samples) +
                              " distance tests for the image (samples² per pixel); at most 10⁹ "
                              "are allowed: use fewer samples or pixels");
     if (double(in.width) * in.height * in.samples > kMaxImageWork)
         throw InputError("supersampling.samples",
-                         "makes " + num(double(in.width) * in.height * in.samples) +
+                         "makes " + given(double(in.width) * in.height * in.samples) +
                              " samples for the image; at most 4·10⁶ are allowed");
     const Image& im = in.image;
     switch (im.kind) {
@@ -338,7 +338,7 @@ void Sampling::validate(const Input& in) {
                 check_finite(im.point[c], f);
                 if (std::fabs(im.point[c]) > 1e6)
                     throw InputError(f,
-                                     "must be within ±10⁶ pixels (got " + num(im.point[c]) + ")");
+                                     "must be within ±10⁶ pixels (got " + given(im.point[c]) + ")");
             }
             break;
         case ImageKind::Checkerboard:
@@ -349,20 +349,20 @@ void Sampling::validate(const Input& in) {
                 throw InputError("image.horizon",
                                  "must be above the bottom row: between 0 (excluded) "
                                  "and 10⁶ pixels (got " +
-                                     num(im.horizon) + ")");
+                                     given(im.horizon) + ")");
             if (im.square < 1e-6 || im.square > 1e6)
                 throw InputError("image.square",
-                                 "must be between 10⁻⁶ and 10⁶ (got " + num(im.square) + ")");
+                                 "must be between 10⁻⁶ and 10⁶ (got " + given(im.square) + ")");
             if (im.focal < 1e-6 || im.focal > 1e6)
                 throw InputError("image.focal",
-                                 "must be between 10⁻⁶ and 10⁶ pixels (got " + num(im.focal) + ")");
+                                 "must be between 10⁻⁶ and 10⁶ pixels (got " + given(im.focal) + ")");
             break;
         case ImageKind::ZonePlate:
             check_finite(im.nyquist_radius, "image.nyquist_radius");
             if (im.nyquist_radius < 1e-3 || im.nyquist_radius > 1e6)
                 throw InputError(
                     "image.nyquist_radius",
-                    "must be between 10⁻³ and 10⁶ pixels (got " + num(im.nyquist_radius) + ")");
+                    "must be between 10⁻³ and 10⁶ pixels (got " + given(im.nyquist_radius) + ")");
             break;
     }
 }

@@ -51,9 +51,9 @@ bool segments_meet(dvec2 a, dvec2 b, dvec2 c, dvec2 d) {
 }
 
 void check_coordinate(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
     if (std::fabs(v) > Supersampling::kMaxCoordinate)
-        throw InputError(field, "must be within ±10⁶ pixels (got " + num(v) + ")");
+        throw InputError(field, "must be within ±10⁶ pixels (got " + given(v) + ")");
 }
 
 std::string filter_formula(Filter f) {
@@ -134,7 +134,7 @@ void Supersampling::validate(const Input& in) {
                              sampling::pattern_id(in.pattern) + " pattern (got " +
                              std::to_string(in.samples) + ")");
     if (!std::isfinite(in.radius) || in.radius < 0 || in.radius > 2)
-        throw InputError("radius", "must be between 0 and 2 pixels (got " + num(in.radius) + ")");
+        throw InputError("radius", "must be between 0 and 2 pixels (got " + given(in.radius) + ")");
     check_coordinate(in.i, "pixel[0]");
     check_coordinate(in.j, "pixel[1]");
     const sampling::Region& r = in.scene;
@@ -143,7 +143,7 @@ void Supersampling::validate(const Input& in) {
         check_coordinate(r.point.y, "scene.point[1]");
         if (!std::isfinite(r.angle_deg))
             throw InputError("scene.angle",
-                             "must be a finite number (got " + num(r.angle_deg) + ")");
+                             "must be a finite number (got " + given(r.angle_deg) + ")");
         return;
     }
     const auto& p = r.points;

@@ -167,7 +167,7 @@ void check_position(dvec3 p, const std::string& field) {
     for (int d = 0; d < 3; ++d)
         if (!std::isfinite(p[d]) || std::fabs(p[d]) > Shading::kMaxLightCoordinate)
             throw InputError(field + index_text(d),
-                             "must lie within ±1e100 (got " + num(p[d]) + ")");
+                             "must lie within ±1e100 (got " + given(p[d]) + ")");
 }
 
 struct Box {
@@ -200,13 +200,13 @@ void check_input(const Input& in) {
             const double v = mesh.vertices[k][d];
             auto field = [&] { return "mesh.vertices" + index_text(k) + index_text(d); };
             if (!std::isfinite(v))
-                throw InputError(field(), "must be a finite number (got " + num(v) + ")");
+                throw InputError(field(), "must be a finite number (got " + given(v) + ")");
             if (std::fabs(v) > Shading::kMaxCoordinate)
-                throw InputError(field(), "must lie within ±1e9 (got " + num(v) + ")");
+                throw InputError(field(), "must lie within ±1e9 (got " + given(v) + ")");
             // The exact inside test multiplies x and y; far below a pixel they could underflow.
             if (d < 2 && v != 0 && std::fabs(v) < 1e-100)
                 throw InputError(field(),
-                                 "must be 0 or at least 1e-100 in size (got " + num(v) + ")");
+                                 "must be 0 or at least 1e-100 in size (got " + given(v) + ")");
         }
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.vertices.size())
         throw InputError("mesh.normals", "must give one normal per vertex, " +
@@ -217,7 +217,7 @@ void check_input(const Input& in) {
         for (int d = 0; d < 3; ++d)
             if (!std::isfinite(mesh.normals[k][d]))
                 throw InputError(field() + index_text(d),
-                                 "must be a finite number (got " + num(mesh.normals[k][d]) + ")");
+                                 "must be a finite number (got " + given(mesh.normals[k][d]) + ")");
         if (mesh.normals[k] == dvec3(0.0))
             throw InputError(field(), "must not be the zero vector: a vertex needs a direction");
     }
@@ -252,9 +252,9 @@ void check_input(const Input& in) {
     }
     if (work > Shading::kMaxWork)
         throw InputError("mesh.triangles",
-                         "the triangles' bounding boxes hold " + num(work, 10) +
+                         "the triangles' bounding boxes hold " + given(work, 10) +
                              " pixels in all (inside the image), more than the limit of " +
-                             num(Shading::kMaxWork, 10) + ": the run would take too long");
+                             given(Shading::kMaxWork, 10) + ": the run would take too long");
 
     const PhongLighting::Input& L = in.lighting;
     check_position(L.eye, "lighting.eye");
@@ -288,10 +288,10 @@ void check_input(const Input& in) {
                     "lighting.lights" + index_text(static_cast<long long>(i)) + ".attenuation",
                     "makes the light too bright near the mesh: 1/(c1 + c2 r + c3 r²) "
                     "at r = " +
-                        num(r) +
+                        given(r) +
                         " (the nearest the mesh's bounding box "
                         "comes) is " +
-                        num(1 / den) + ", and the colours could overflow");
+                        given(1 / den) + ", and the colours could overflow");
         }
     }
     if (in.has_pixel) {

@@ -79,7 +79,7 @@ std::vector<double> vec3(const dvec3& v) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 // P oriented so that the light is on its positive side, and h_L = P · L.
@@ -208,7 +208,7 @@ void ProjectiveShadow::validate(const Input& in) {
         throw InputError("light[3]",
                          "must be 1 (a point light [x, y, z, 1]) or 0 (a directional light [l_x, "
                          "l_y, l_z, 0]), got " +
-                             num(in.light.w));
+                             given(in.light.w));
     if (directional(in) && dvec3(in.light) == dvec3(0))
         throw InputError("light",
                          "a directional light [l_x, l_y, l_z, 0] needs a non-zero direction");

@@ -390,9 +390,9 @@ const Spec& ShadowMap::spec() {
 namespace {
 
 void check_number(double v, const std::string& field, double limit = ShadowMap::kMaxCoord) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
     if (std::fabs(v) > limit)
-        throw InputError(field, "is too large (" + num(v) + "): at most " + num(limit) +
+        throw InputError(field, "is too large (" + given(v) + "): at most " + given(limit) +
                                     " in size; scale the scene down");
 }
 void check_point(const dvec3& p, const std::string& field) {
@@ -421,7 +421,7 @@ void check_camera(const ShadowMap::Camera& c, const std::string& name) {
 void check_fov(double fov, const std::string& field) {
     check_number(fov, field);
     if (!(fov > 0 && fov <= 170))
-        throw InputError(field, "must be in (0, 170] degrees (got " + num(fov) + ")");
+        throw InputError(field, "must be in (0, 170] degrees (got " + given(fov) + ")");
 }
 
 }  // namespace
@@ -457,23 +457,23 @@ void ShadowMap::validate(const Input& in) {
             throw InputError("light.extent",
                              "must be > 0: the half-width of the light's "
                              "orthographic box (got " +
-                                 num(l.extent) + ")");
+                                 given(l.extent) + ")");
     }
     check_number(l.near, "light.near");
     check_number(l.far, "light.far");
     if (l.near < 0 || (l.type == LightType::Spot && l.near == 0))
         throw InputError("light.near",
                          l.type == LightType::Spot
-                             ? "must be > 0 for a spot light (got " + num(l.near) + ")"
-                             : "must be ≥ 0 (got " + num(l.near) + ")");
+                             ? "must be > 0 for a spot light (got " + given(l.near) + ")"
+                             : "must be ≥ 0 (got " + given(l.near) + ")");
     if (!(l.far > l.near))
-        throw InputError("light.far", "must be greater than light.near (" + num(l.far) + " ≤ " +
-                                          num(l.near) + ")");
+        throw InputError("light.far", "must be greater than light.near (" + given(l.far) + " ≤ " +
+                                          given(l.near) + ")");
     if (in.map_size < 1 || in.map_size > kMaxMap)
         throw InputError("map_size", "must be 1 to " + std::to_string(kMaxMap) + " (got " +
                                          std::to_string(in.map_size) + ")");
     check_number(in.bias, "bias", 1e300);
-    if (in.bias < 0) throw InputError("bias", "must be ≥ 0 (got " + num(in.bias) + ")");
+    if (in.bias < 0) throw InputError("bias", "must be ≥ 0 (got " + given(in.bias) + ")");
     check_camera(in.eye, "eye");
     check_fov(in.eye.fov_deg, "eye.fov_deg");
     if (in.eye.width < 1 || in.eye.width > kMaxEye)

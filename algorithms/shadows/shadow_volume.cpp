@@ -57,9 +57,9 @@ void check_point(const dvec3& p, const std::string& field) {
     for (int i = 0; i < 3; ++i) {
         const std::string f = field + "[" + idx(i) + "]";
         if (!std::isfinite(p[i]))
-            throw InputError(f, "must be a finite number (got " + num(p[i]) + ")");
+            throw InputError(f, "must be a finite number (got " + given(p[i]) + ")");
         if (std::fabs(p[i]) > ShadowVolume::kMaxCoordinate)
-            throw InputError(f, "is too large (" + num(p[i]) +
+            throw InputError(f, "is too large (" + given(p[i]) +
                                     "): coordinates must be at most 1e9 in size, or the "
                                     "shadow volume's products lose all precision");
     }
@@ -302,9 +302,9 @@ void ShadowVolume::validate(const Input& in) {
         check_point(in.targets[k], "targets[" + std::to_string(k) + "]");
     if (in.has_floor) {
         if (!std::isfinite(in.floor))
-            throw InputError("floor", "must be a finite number (got " + num(in.floor) + ")");
+            throw InputError("floor", "must be a finite number (got " + given(in.floor) + ")");
         if (std::fabs(in.floor) > kMaxCoordinate)
-            throw InputError("floor", "is too large (" + num(in.floor) +
+            throw InputError("floor", "is too large (" + given(in.floor) +
                                           "): coordinates must be at most 1e9 in size");
     }
     // Faces: indices in range and distinct, non-zero area.

@@ -71,7 +71,7 @@ std::string plane_name(int a, int b) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 }  // namespace
@@ -135,7 +135,7 @@ void ArbitraryAxis::validate(const Input& in) {
                          "direction");
     const Frame f = choose(in.axis);
     if (!std::isfinite(f.scale * glm::length(f.as)))
-        throw InputError("axis", "is too long: its length " + num(in.axis) +
+        throw InputError("axis", "is too long: its length " + given(in.axis) +
                                      " overflows a double; scale it down (only its direction "
                                      "matters)");
     check_finite(in.angle_deg, "angle_deg");
@@ -145,7 +145,7 @@ void ArbitraryAxis::validate(const Input& in) {
             check_finite(in.points[p][c], f);
             // The picture sizes itself by |p|, whose square overflows past about 1e154.
             if (std::fabs(in.points[p][c]) > 1e100)
-                throw InputError(f, "must be within ±1e100 (got " + num(in.points[p][c]) + ")");
+                throw InputError(f, "must be within ±1e100 (got " + given(in.points[p][c]) + ")");
         }
 }
 

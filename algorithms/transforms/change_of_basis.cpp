@@ -130,9 +130,9 @@ std::string combination_tex(dvec3 c, const char* axis, const char* origin, int d
 }
 
 void check_number(double x, const std::string& field) {
-    if (!std::isfinite(x)) throw InputError(field, "must be a finite number (got " + num(x) + ")");
+    if (!std::isfinite(x)) throw InputError(field, "must be a finite number (got " + given(x) + ")");
     if (std::fabs(x) > ChangeOfBasis::kMaxMagnitude)
-        throw InputError(field, "must be within ±1e100 (got " + num(x) +
+        throw InputError(field, "must be within ±1e100 (got " + given(x) +
                                     "): larger numbers overflow once three of them are multiplied");
 }
 
@@ -149,7 +149,7 @@ void check_frame(const Frame& f, const std::string& name, const std::string& cou
             throw InputError(field, "must not be the zero vector: the three axes of " + course +
                                         " must span space");
         if (max_abs(f.axes[i]) < ChangeOfBasis::kMinAxis)
-            throw InputError(field, "is too short (" + num(f.axes[i]) +
+            throw InputError(field, "is too short (" + given(f.axes[i]) +
                                         "): an axis must have a component of at least 1e-100");
     }
     const Scaled sc = scaled(f);
@@ -161,12 +161,12 @@ void check_frame(const Frame& f, const std::string& name, const std::string& cou
                 throw InputError(
                     name + ".axes[" + std::to_string(j) + "]",
                     std::string(f.axes[i] == f.axes[j] ? "is the same as " : "is parallel to ") +
-                        name + ".axes[" + std::to_string(i) + "] (" + num(f.axes[j]) + " and " +
-                        num(f.axes[i]) + "): " + course + " needs three independent axes");
+                        name + ".axes[" + std::to_string(i) + "] (" + given(f.axes[j]) + " and " +
+                        given(f.axes[i]) + "): " + course + " needs three independent axes");
         }
     if (sc.ratio <= ChangeOfBasis::kSingularTolerance)
-        throw InputError(name + ".axes", "are linearly dependent (det = " + num(determinant(f)) +
-                                             ", |det| / (|a₁| |a₂| |a₃|) = " + num(sc.ratio) +
+        throw InputError(name + ".axes", "are linearly dependent (det = " + given(determinant(f)) +
+                                             ", |det| / (|a₁| |a₂| |a₃|) = " + given(sc.ratio) +
                                              "): the three axes lie in one plane, so " + course +
                                              " is not a frame and has no inverse");
 }

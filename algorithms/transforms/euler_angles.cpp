@@ -96,7 +96,7 @@ void EulerAngles::validate(const Input& in) {
     for (int n = 0; n < 3; ++n)
         if (!std::isfinite(in.angles_deg[n]))
             throw InputError("angles_deg[" + std::to_string(n) + "]",
-                             "must be a finite number (got " + num(in.angles_deg[n]) + ")");
+                             "must be a finite number (got " + given(in.angles_deg[n]) + ")");
 }
 
 EulerAngles::State EulerAngles::start(const Input& in) {

@@ -68,7 +68,7 @@ void check_finite(dvec3 v, const std::string& field) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(v[i]))
             throw InputError(field + "[" + std::to_string(i) + "]",
-                             "must be a finite number (got " + num(v[i]) + ")");
+                             "must be a finite number (got " + given(v[i]) + ")");
 }
 
 }  // namespace
@@ -122,21 +122,21 @@ void NormalTransform::validate(const Input& in) {
         for (int r = 0; r < 3; ++r)
             if (!std::isfinite(in.linear[c][r]))
                 throw InputError("matrix[" + std::to_string(r) + "][" + std::to_string(c) + "]",
-                                 "must be a finite number (got " + num(in.linear[c][r]) + ")");
+                                 "must be a finite number (got " + given(in.linear[c][r]) + ")");
     check_finite(in.normal, "normal");
     const double det = determinant(in.linear);
     const double size = glm::length(in.linear[0]) * glm::length(in.linear[1]) * glm::length(in.linear[2]);
     if (!std::isfinite(det) || !std::isfinite(size))
         throw InputError("matrix", "is too large to invert");
     if (std::fabs(det) <= 1e-12 * size)
-        throw InputError("matrix", "is singular (det = " + num(det) +
+        throw InputError("matrix", "is singular (det = " + given(det) +
                                        "): it flattens space, so it has no inverse and no normal "
                                        "matrix");
     if (!finite(inverse_transpose(in.linear, det)))
-        throw InputError("matrix", "is too small or too large to invert (det = " + num(det) + ")");
+        throw InputError("matrix", "is too small or too large to invert (det = " + given(det) + ")");
     if (in.normal == dvec3(0)) throw InputError("normal", "must not be the zero vector");
     if (!std::isfinite(glm::length(in.normal)) || glm::length(in.normal) < 1e-150)
-        throw InputError("normal", "is too large or too small to normalise (" + num(in.normal) + ")");
+        throw InputError("normal", "is too large or too small to normalise (" + given(in.normal) + ")");
     const std::array<dvec3, 2> t = in.has_tangents ? in.tangents : built_tangents(in.normal);
     for (int i = 0; i < 2; ++i) {
         const std::string f = "tangents[" + std::to_string(i) + "]";
@@ -144,10 +144,10 @@ void NormalTransform::validate(const Input& in) {
         check_finite(t[i], f);
         if (t[i] == dvec3(0)) throw InputError(f, "must not be the zero vector");
         if (!std::isfinite(glm::length(t[i])) || glm::length(t[i]) < 1e-150)
-            throw InputError(f, "is too large or too small to use (" + num(t[i]) + ")");
+            throw InputError(f, "is too large or too small to use (" + given(t[i]) + ")");
         if (std::fabs(cos_between(t[i], in.normal)) > kPerpTolerance)
             throw InputError(f, "must be perpendicular to the normal (t · n = " +
-                                    num(glm::dot(t[i], in.normal)) + ")");
+                                    given(glm::dot(t[i], in.normal)) + ")");
     }
     if (in.has_tangents &&
         glm::length(glm::cross(t[0], t[1])) <= 1e-9 * glm::length(t[0]) * glm::length(t[1]))

@@ -112,7 +112,7 @@ std::string column_tex(dvec4 v) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 void check_finite(dvec3 p, const std::string& field) {
     check_finite(p.x, field + "[0]");
@@ -294,23 +294,23 @@ void validate_frustum(const Perspective::Input& in) {
     check_finite(in.bottom, "frustum.bottom");
     check_finite(in.top, "frustum.top");
     if (!(in.left < in.right))
-        throw InputError("frustum.right", "must be greater than left (" + num(in.right) + " ≤ " +
-                                              num(in.left) + "): the near rectangle has no width");
+        throw InputError("frustum.right", "must be greater than left (" + given(in.right) + " ≤ " +
+                                              given(in.left) + "): the near rectangle has no width");
     if (!(in.bottom < in.top))
-        throw InputError("frustum.top", "must be greater than bottom (" + num(in.top) + " ≤ " +
-                                            num(in.bottom) + "): the near rectangle has no height");
+        throw InputError("frustum.top", "must be greater than bottom (" + given(in.top) + " ≤ " +
+                                            given(in.bottom) + "): the near rectangle has no height");
     auto usable = [&](double lo, double hi) {
         const double w = hi - lo, a = 2 * in.near / w, b = (hi + lo) / w;
         return std::isfinite(w) && std::isfinite(a) && std::isfinite(b) && a != 0;
     };
     if (!usable(in.left, in.right))
-        throw InputError("frustum.right", "left " + num(in.left) + " and right " + num(in.right) +
+        throw InputError("frustum.right", "left " + given(in.left) + " and right " + given(in.right) +
                                               " give a matrix too large or too small to use "
-                                              "for near " + num(in.near));
+                                              "for near " + given(in.near));
     if (!usable(in.bottom, in.top))
-        throw InputError("frustum.top", "bottom " + num(in.bottom) + " and top " + num(in.top) +
+        throw InputError("frustum.top", "bottom " + given(in.bottom) + " and top " + given(in.top) +
                                             " give a matrix too large or too small to use "
-                                            "for near " + num(in.near));
+                                            "for near " + given(in.near));
 }
 
 }  // namespace
@@ -328,25 +328,25 @@ void Perspective::validate(const Input& in) {
     if (!in.has_frustum) {
         if (!(in.fov_y_deg > 0 && in.fov_y_deg < 180))
             throw InputError("fov_y_deg", "must be between 0 and 180 degrees, both excluded (got " +
-                                              num(in.fov_y_deg) + ")");
+                                              given(in.fov_y_deg) + ")");
         if (in.aspect <= 0)
             throw InputError("aspect", "must be positive: it is width / height (got " +
-                                           num(in.aspect) + ")");
+                                           given(in.aspect) + ")");
     }
     if (in.near <= 0)
         throw InputError(near_field,
                          "must be positive: the near plane lies in front of the eye (got " +
-                             num(in.near) + ")");
+                             given(in.near) + ")");
     // Beyond these the matrix's entries (far + near)/(far − near) and 2 far near/(far − near)
     // lose all precision or overflow, and near is the first of the two a user puts out of range.
     if (in.near < 1e-100 || in.near > 1e100)
-        throw InputError(near_field, "must lie between 1e-100 and 1e100 (got " + num(in.near) + ")");
+        throw InputError(near_field, "must lie between 1e-100 and 1e100 (got " + given(in.near) + ")");
     if (in.far <= in.near)
-        throw InputError(far_field, "must be greater than near (" + num(in.far) +
-                                        " ≤ " + num(in.near) + ")");
+        throw InputError(far_field, "must be greater than near (" + given(in.far) +
+                                        " ≤ " + given(in.near) + ")");
     if (in.has_frustum) validate_frustum(in);
     if (!finite(projection_matrix(in)) || projection_matrix(in)[0][0] == 0)
-        throw InputError(far_field, "near " + num(in.near) + " and far " + num(in.far) +
+        throw InputError(far_field, "near " + given(in.near) + " and far " + given(in.far) +
                                         " give a matrix too large or too small to use");
     if (in.look_at) {
         check_finite(in.eye, "eye");
@@ -354,7 +354,7 @@ void Perspective::validate(const Input& in) {
         check_finite(in.up, "up");
         const dvec3 dir = in.center - in.eye;
         if (dir == dvec3(0))
-            throw InputError("center", "must differ from eye " + num(in.eye) +
+            throw InputError("center", "must differ from eye " + given(in.eye) +
                                            ": the view direction center − eye is zero");
         if (in.up == dvec3(0)) throw InputError("up", "must not be the zero vector");
         if (!std::isfinite(glm::length(dir)) || !std::isfinite(glm::length(in.up)))
@@ -363,7 +363,7 @@ void Perspective::validate(const Input& in) {
         const double sine = glm::length(glm::cross(dir / glm::length(dir), in.up / glm::length(in.up)));
         if (sine < 1e-9)
             throw InputError("up", "must not be parallel to the view direction center − eye = " +
-                                       num(dir) + " (got " + num(in.up) +
+                                       given(dir) + " (got " + given(in.up) +
                                        "): the camera's roll is undefined");
         if (!finite(view_matrix(in)))
             throw InputError("eye", "is too far from the origin to build the view matrix");
@@ -375,9 +375,9 @@ void Perspective::validate(const Input& in) {
                              "model[" + std::to_string(r) + "][" + std::to_string(c) + "]");
         if (in.model[0][3] != 0 || in.model[1][3] != 0 || in.model[2][3] != 0 || in.model[3][3] != 1)
             throw InputError("model[3]", "must be [0, 0, 0, 1]: the model matrix is affine (got [" +
-                                             num(in.model[0][3]) + ", " + num(in.model[1][3]) +
-                                             ", " + num(in.model[2][3]) + ", " +
-                                             num(in.model[3][3]) + "])");
+                                             given(in.model[0][3]) + ", " + given(in.model[1][3]) +
+                                             ", " + given(in.model[2][3]) + ", " +
+                                             given(in.model[3][3]) + "])");
     }
     if (in.has_viewport) {
         check_finite(in.viewport.x, "viewport[0]");
@@ -385,7 +385,7 @@ void Perspective::validate(const Input& in) {
         if (in.viewport.x <= 0 || in.viewport.y <= 0)
             throw InputError(in.viewport.x <= 0 ? "viewport[0]" : "viewport[1]",
                              "must be positive: the viewport is [width, height] in pixels (got " +
-                                 num(in.viewport) + ")");
+                                 given(in.viewport) + ")");
     }
     Result r;
     r.model = in.model;
@@ -395,10 +395,10 @@ void Perspective::validate(const Input& in) {
         const std::string f = "points[" + std::to_string(k) + "]";
         check_finite(in.points[k], f);
         const dvec4 c = through(r, in.points[k]).clip;
-        if (!finite(c)) throw InputError(f, "is too large to project (" + num(in.points[k]) + ")");
+        if (!finite(c)) throw InputError(f, "is too large to project (" + given(in.points[k]) + ")");
         // Just in front of the eye's plane (w > 0 but tiny) the divide overflows.
         if (c.w > 0 && !finite(dvec4(dvec3(c) / c.w, 1.0)))
-            throw InputError(f, "lies too close to the eye's plane to divide (w = " + num(c.w) +
+            throw InputError(f, "lies too close to the eye's plane to divide (w = " + given(c.w) +
                                     "): its NDC coordinates overflow");
     }
     for (std::size_t k = 0; k < in.segments.size(); ++k) {
@@ -406,17 +406,17 @@ void Perspective::validate(const Input& in) {
             const std::string f = "segments[" + std::to_string(k) + "][" + std::to_string(e) + "]";
             check_finite(in.segments[k][e], f);
             const dvec4 c = through(r, in.segments[k][e]).clip;
-            if (!finite(c)) throw InputError(f, "is too large to project (" + num(in.segments[k][e]) + ")");
+            if (!finite(c)) throw InputError(f, "is too large to project (" + given(in.segments[k][e]) + ")");
             // Cutting at the near plane interpolates w from the ends: an end 1e9 times farther
             // than the near plane would leave the cut's w (= near) to round-off.
             if (std::fabs(c.w) > 1e9 * in.near)
-                throw InputError(f, "lies too far (depth " + num(std::fabs(c.w)) +
-                                        ") for the near plane at " + num(in.near) +
+                throw InputError(f, "lies too far (depth " + given(std::fabs(c.w)) +
+                                        ") for the near plane at " + given(in.near) +
                                         ": the cut would drown in round-off");
         }
         if (in.segments[k][0] == in.segments[k][1])
             throw InputError("segments[" + std::to_string(k) + "]",
-                             "has both ends at " + num(in.segments[k][0]) + ": not a segment");
+                             "has both ends at " + given(in.segments[k][0]) + ": not a segment");
     }
 }
 

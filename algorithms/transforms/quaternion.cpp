@@ -104,7 +104,7 @@ std::string turn_text(const dquat& q) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 void check_quat(const dquat& q, const std::string& name) {
     const double c[4] = {q.w, q.x, q.y, q.z};
@@ -363,7 +363,7 @@ void Quaternion::validate(const Input& in) {
                 throw InputError("q", "is too large: |q|² overflows a double; scale it down");
             if (n2 < DBL_MIN)
                 throw InputError("q", "is too small: |q|² underflows a double (|q| = " +
-                                          num(length(in.q)) + "); scale it up");
+                                          given(length(in.q)) + "); scale it up");
             return;
         }
         case Op::Rotate: {
@@ -399,16 +399,16 @@ void Quaternion::validate(const Input& in) {
                 throw InputError(
                     "matrix",
                     "is not a rotation: its columns must be orthonormal (RᵀR = I within " +
-                        num(tol) + "), but " +
-                        (std::isfinite(err) ? "max |RᵀR − I| = " + num(err, 4)
+                        given(tol) + "), but " +
+                        (std::isfinite(err) ? "max |RᵀR − I| = " + given(err, 4)
                                             : std::string("RᵀR overflows a double")));
             const double det = glm::determinant(in.matrix);
             if (det < 0)
-                throw InputError("matrix", "is a reflection (det R = " + num(det, 4) +
+                throw InputError("matrix", "is a reflection (det R = " + given(det, 4) +
                                                "), not a rotation: a rotation has det R = 1");
             if (!(std::fabs(det - 1) <= tol))
-                throw InputError("matrix", "is not a rotation: det R = " + num(det, 4) +
-                                               " (must be 1 within " + num(tol) + ")");
+                throw InputError("matrix", "is not a rotation: det R = " + given(det, 4) +
+                                               " (must be 1 within " + given(tol) + ")");
             return;
         }
     }

@@ -28,7 +28,7 @@ std::string node_field(std::size_t i) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 // The rotation by `deg` about `axis` (≠ 0): a coordinate axis uses the exact coordinate
@@ -211,7 +211,7 @@ void SceneDag::validate(const Input& in) {
             if (!(std::fabs(det) > 1e-12))
                 throw InputError(f + ".matrix",
                                  "is singular (its upper 3×3 has determinant " +
-                                     num(big * big * big * det) +
+                                     given(big * big * big * det) +
                                      "): it flattens the node and everything under it, and "
                                      "without an inverse the node's frame and normals are lost");
         } else {

@@ -105,7 +105,7 @@ std::string turn_text(const dquat& q) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 void check_quat(const dquat& q, const std::string& name) {
@@ -192,7 +192,7 @@ void Slerp::validate(const Input& in) {
     check_quat(in.q1, "q1");
     check_finite(in.u, "u");
     if (in.u < 0 || in.u > 1)
-        throw InputError("u", "must be in [0, 1] (got " + num(in.u) +
+        throw InputError("u", "must be in [0, 1] (got " + given(in.u) +
                                   "): slerp interpolates between the two orientations; "
                                   "extrapolating past them is not supported");
 }

@@ -63,7 +63,7 @@ std::string matrix_tex(const dmat3& m) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 std::string sample_name(int k) { return "S" + std::to_string(k); }
@@ -186,14 +186,14 @@ void TrackballDrag<K>::validate(const Input& in) {
     check_finite(in.viewport.x, "viewport[0]");
     check_finite(in.viewport.y, "viewport[1]");
     if (in.viewport.x <= 0)
-        throw InputError("viewport[0]", "the width must be positive (got " + num(in.viewport.x) + ")");
+        throw InputError("viewport[0]", "the width must be positive (got " + given(in.viewport.x) + ")");
     if (in.viewport.y <= 0)
         throw InputError("viewport[1]",
-                         "the height must be positive (got " + num(in.viewport.y) + ")");
+                         "the height must be positive (got " + given(in.viewport.y) + ")");
     if (in.viewport.x < 1e-100 || in.viewport.x > 1e100 || in.viewport.y < 1e-100 ||
         in.viewport.y > 1e100)
         throw InputError(in.viewport.x < 1e-100 || in.viewport.x > 1e100 ? "viewport[0]" : "viewport[1]",
-                         "must lie between 1e-100 and 1e100 pixels (got " + num(in.viewport) + ")");
+                         "must lie between 1e-100 and 1e100 pixels (got " + given(in.viewport) + ")");
     if (in.samples.size() < 2)
         throw InputError("samples", "needs at least 2 mouse samples to make a drag (got " +
                                         std::to_string(in.samples.size()) + ")");
@@ -205,8 +205,8 @@ void TrackballDrag<K>::validate(const Input& in) {
         const BallPoint b = trackball::to_ball(in.samples[k], in.viewport);
         if (!std::isfinite(glm::dot(b.m, b.m)) || !std::isfinite(b.p.x) || !std::isfinite(b.p.y))
             throw InputError(f, "is too far from the viewport to map onto the ball (" +
-                                    num(in.samples[k]) + " in a " + num(in.viewport.x) + " × " +
-                                    num(in.viewport.y) + " viewport)");
+                                    given(in.samples[k]) + " in a " + given(in.viewport.x) + " × " +
+                                    given(in.viewport.y) + " viewport)");
     }
     for (std::size_t k = 0; k < in.object.size(); ++k) {
         const std::string f = "object[" + std::to_string(k) + "]";
@@ -215,7 +215,7 @@ void TrackballDrag<K>::validate(const Input& in) {
         check_finite(in.object[k].z, f + "[2]");
         if (std::fabs(in.object[k].x) > 1e150 || std::fabs(in.object[k].y) > 1e150 ||
             std::fabs(in.object[k].z) > 1e150)
-            throw InputError(f, "is too large to rotate (" + num(in.object[k]) + ")");
+            throw InputError(f, "is too large to rotate (" + given(in.object[k]) + ")");
     }
 }
 

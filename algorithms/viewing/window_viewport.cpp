@@ -66,7 +66,7 @@ bool aspects_differ(double a, double b) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + num(v) + ")");
+    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 // The input's name for one of a rectangle's numbers: corner 0 or 1 (min or max), axis 0 or 1.
@@ -92,17 +92,17 @@ void check_rect(const Rect& r, const std::string& name, Form form, const std::st
     const std::string relation = ordered ? "must be greater than " : "must differ from ";
     if (r.xmax == r.xmin)
         throw InputError(field(1, 0), relation + field(0, 0) + ": the " + name +
-                                          " has zero width (xmin = xmax = " + num(r.xmin) + ")");
+                                          " has zero width (xmin = xmax = " + given(r.xmin) + ")");
     if (ordered && r.xmax < r.xmin)
         throw InputError(field(1, 0), "must be greater than " + field(0, 0) + " (" +
-                                          num(r.xmax) + " < " + num(r.xmin) +
+                                          given(r.xmax) + " < " + given(r.xmin) +
                                           "): the rectangle is inverted" + hint);
     if (r.ymax == r.ymin)
         throw InputError(field(1, 1), relation + field(0, 1) + ": the " + name +
-                                          " has zero height (ymin = ymax = " + num(r.ymin) + ")");
+                                          " has zero height (ymin = ymax = " + given(r.ymin) + ")");
     if (ordered && r.ymax < r.ymin)
         throw InputError(field(1, 1), "must be greater than " + field(0, 1) + " (" +
-                                          num(r.ymax) + " < " + num(r.ymin) +
+                                          given(r.ymax) + " < " + given(r.ymin) +
                                           "): the rectangle is inverted" + hint);
 }
 
@@ -185,8 +185,8 @@ void WindowViewport::validate(const Input& in) {
         const dmat3 m = name[0] == 'w' ? ndc_from(r) : device_from(r);
         if (!std::isfinite(width(r)) || !std::isfinite(height(r)) || !finite(m) ||
             m[0][0] == 0 || m[1][1] == 0)
-            throw InputError(name, "is too large or too small to map (" + num(width(r)) + " × " +
-                                       num(height(r)) + ")");
+            throw InputError(name, "is too large or too small to map (" + given(width(r)) + " × " +
+                                       given(height(r)) + ")");
     }
     // ... and so must the whole map and the points through it (a tiny window on a huge viewport
     // scales by 1e600).

@@ -52,11 +52,11 @@ WindowViewport::Rect viewport(const Reader& r, WindowViewport::Form& form) {
     // Rows run downward: the window's bottom (its ymin) goes to the larger row number.
     form = Form::YDown;
     if (xmax < xmin)
-        throw InputError("viewport.xmax", "must be greater than viewport.xmin (" + num(xmax) +
-                                              " < " + num(xmin) + "): the rectangle is inverted");
+        throw InputError("viewport.xmax", "must be greater than viewport.xmin (" + given(xmax) +
+                                              " < " + given(xmin) + "): the rectangle is inverted");
     if (ymax < ymin)
         throw InputError("viewport.ymax",
-                         "must be greater than viewport.ymin (" + num(ymax) + " < " + num(ymin) +
+                         "must be greater than viewport.ymin (" + given(ymax) + " < " + given(ymin) +
                              "): with \"y_down\" the rectangle is still given by its smallest "
                              "and largest row");
     return {xmin, ymax, xmax, ymin};

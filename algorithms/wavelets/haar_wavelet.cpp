@@ -295,17 +295,17 @@ void HaarWavelet::validate(const Input& in) {
         const std::string f =
             img ? "image[" + std::to_string(i / in.n) + "][" + std::to_string(i % in.n) + "]"
                 : "signal[" + std::to_string(i) + "]";
-        if (!std::isfinite(v)) throw InputError(f, "must be a finite number (got " + num(v) + ")");
+        if (!std::isfinite(v)) throw InputError(f, "must be a finite number (got " + given(v) + ")");
         if (std::fabs(v) > kMaxValue)
-            throw InputError(f, "is too large (" + num(v) +
+            throw InputError(f, "is too large (" + given(v) +
                                     "): at most 1e300 in size, so that the normalised transform's "
                                     "growth (√2 a level) stays finite");
     }
     if (in.compress == Compress::Threshold && !(in.threshold >= 0 && std::isfinite(in.threshold)))
-        throw InputError("threshold", "must be ≥ 0 (got " + num(in.threshold) + ")");
+        throw InputError("threshold", "must be ≥ 0 (got " + given(in.threshold) + ")");
     if (in.compress == Compress::Keep && !(in.keep > 0 && in.keep <= 1))
         throw InputError(
-            "keep", "must be a fraction in (0, 1] of the coefficients (got " + num(in.keep) + ")");
+            "keep", "must be a fraction in (0, 1] of the coefficients (got " + given(in.keep) + ")");
 }
 
 HaarWavelet::State HaarWavelet::start(const Input& in) {

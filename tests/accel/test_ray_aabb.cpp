@@ -214,8 +214,8 @@ TEST_CASE("ray-aabb: cases worked by hand", "[accel][ray-aabb]") {
         CHECK(t.result.hit);
         CHECK(t.result.verdict == Verdict::Hit);
         CHECK(t.result.t_hit == 1);
-        CHECK_THAT(t.steps[0].narration, Catch::Contains("t_near = (0 − (-2))/2 = 1") &&
-                                             Catch::Contains("t_far = (4 − (-2))/2 = 3"));
+        CHECK_THAT(t.steps[0].narration, Catch::Contains("t_near = (0 − (−2))/2 = 1") &&
+                                             Catch::Contains("t_far = (4 − (−2))/2 = 3"));
         CHECK_THAT(t.steps[1].narration, Catch::Contains("Running: t_min = 1, t_max = 2."));
         CHECK_THAT(t.steps[3].narration,
                    Catch::Contains("(0, 1, 1)") && Catch::Contains("(2, 2, 1.5)"));

@@ -331,7 +331,7 @@ TEST_CASE("uniform-grid: the 4 × 4 exam cases worked by hand", "[accel][uniform
         CHECK(t.result.mailbox_skips == 1);  // sphere 0 again in [1, 1, 0]
         CHECK(t.result.brute_force_tests == 3);
         const auto& enter = first(t, "enter");
-        CHECK_THAT(enter.narration, Catch::Contains("t_max_x = (1 − (-1))/1 = 2") &&
+        CHECK_THAT(enter.narration, Catch::Contains("t_max_x = (1 − (−1))/1 = 2") &&
                                         Catch::Contains("t_delta_x = 1/1 = 1") &&
                                         Catch::Contains("t_max_y = (1 − 0.25)/0.5 = 1.5") &&
                                         Catch::Contains("t_delta_y = 1/0.5 = 2") &&
@@ -398,7 +398,7 @@ TEST_CASE("uniform-grid: the 4 × 4 exam cases worked by hand", "[accel][uniform
         CHECK(t.result.cells_visited == Cells{{1, 1, 0}, {0, 1, 0}});
         CHECK(t.result.t == 1.25);
         CHECK_THAT(first(t, "start-inside").narration,
-                   Catch::Contains("t_max_x = (1 − 2)/(-1) = 1"));
+                   Catch::Contains("t_max_x = (1 − 2)/(−1) = 1"));
     }
     SECTION("a ray that misses the grid: no cell, no test") {
         const auto t = traced(grid4({sphere({0.5, 0.5, 0.5}, 0.25)}, {-1, 5, 0.5}, {1, 0, 0}));

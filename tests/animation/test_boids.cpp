@@ -280,13 +280,13 @@ TEST_CASE("boids: the exam-style example worked by hand", "[animation][boids]") 
     const std::string& n = t.steps[0].narration;
     CAPTURE(n);
     CHECK(n.find("saw 3 neighbours within r = 6 (1, 2, 3)") != std::string::npos);
-    CHECK(n.find("1: d = (1, 0), |d| = 1 → (-1, 0)") != std::string::npos);
-    CHECK(n.find("2: d = (0, -2), |d| = 2 → (0, 0.5)") != std::string::npos);
-    CHECK(n.find("s = (-1, 0.5)") != std::string::npos);
-    CHECK(n.find("= (-0.333333, 0.333333)") != std::string::npos);
-    CHECK(n.find("= (-0.666667, 0.666667)") != std::string::npos);
-    CHECK(n.find("= (-2, 1.5)") != std::string::npos);
-    CHECK(n.find("v ← v + dt F = (1, 0) + 1 · (-2, 1.5) = (-1, 1.5)") != std::string::npos);
+    CHECK(n.find("1: d = (1, 0), |d| = 1 → (−1, 0)") != std::string::npos);
+    CHECK(n.find("2: d = (0, −2), |d| = 2 → (0, 0.5)") != std::string::npos);
+    CHECK(n.find("s = (−1, 0.5)") != std::string::npos);
+    CHECK(n.find("= (−0.333333, 0.333333)") != std::string::npos);
+    CHECK(n.find("= (−0.666667, 0.666667)") != std::string::npos);
+    CHECK(n.find("= (−2, 1.5)") != std::string::npos);
+    CHECK(n.find("v ← v + dt F = (1, 0) + 1 · (−2, 1.5) = (−1, 1.5)") != std::string::npos);
     CHECK(t.steps[1].event == "summary");
     // Truncation: max_force 2 scales F = (−2, 1.5) to length 2: (−1.6, 1.2), v' = (−0.6, 1.2).
     Input forced = worked();
@@ -296,7 +296,7 @@ TEST_CASE("boids: the exam-style example worked by hand", "[animation][boids]") 
     CHECK(tf.result.rules.steering.y == Approx(1.2));
     CHECK(tf.result.v.x == Approx(-0.6));
     CHECK(tf.result.v.y == Approx(1.2));
-    CHECK(tf.steps[0].narration.find("longer than max_force = 2 (|F| = 2.5), so scaled to (-1.6, 1.2)") !=
+    CHECK(tf.steps[0].narration.find("longer than max_force = 2 (|F| = 2.5), so scaled to (−1.6, 1.2)") !=
           std::string::npos);
     // max_speed 1.5 (every start is slower): v' = (−1, 1.5), speed 1.803, scaled to 1.5.
     Input slow = worked();

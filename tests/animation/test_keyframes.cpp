@@ -461,7 +461,7 @@ TEST_CASE("keyframes: a frame narrates segment, u, the basis and the tangents",
     CAPTURE(mid.narration);
     CHECK(mid.event == "frame");
     CHECK(mid.narration.find("segment 1 [1, 2], u = (1.5 − 1)/1 = 0.5") != std::string::npos);
-    CHECK(mid.narration.find("h00 = 0.5, h10 = 0.125, h01 = 0.5, h11 = -0.125") !=
+    CHECK(mid.narration.find("h00 = 0.5, h10 = 0.125, h01 = 0.5, h11 = −0.125") !=
           std::string::npos);
     CHECK(mid.narration.find("Δ m⁺_1 = 3") != std::string::npos);
     CHECK(mid.narration.find("p = 4.25") != std::string::npos);

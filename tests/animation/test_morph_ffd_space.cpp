@@ -202,7 +202,7 @@ TEST_CASE("morph-ffd in space: a trilinear lattice worked by hand", "[animation]
     REQUIRE(t.steps.size() == 7);
     CHECK(t.steps[0].event == "lattice");
     CHECK(has(t.steps[0].narration, "degree 1 × 1 × 1: 8 control points"));
-    CHECK(has(t.steps[0].narration, "Moved: P_111 by (2, 1, -1); P_100 by (0, 0, 2)"));
+    CHECK(has(t.steps[0].narration, "Moved: P_111 by (2, 1, −1); P_100 by (0, 0, 2)"));
     const std::string& n = t.steps[1].narration;
     CAPTURE(n);
     CHECK(t.steps[1].event == "point");

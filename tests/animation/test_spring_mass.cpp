@@ -459,9 +459,9 @@ TEST_CASE("spring-mass: the first step narrates the force term by term",
     const std::string& n = t.steps[0].narration;
     CAPTURE(n);
     // F = −10 (1.5 − 1) − 1 (0.5) = −5.5; a = −2.75; x = 1.5 + 0.05 = 1.55; v = 0.5 − 0.275.
-    CHECK(n.find("Hooke −k (|d| − L) d̂ = −10 · (1.5 − 1) · (1, 0, 0) = (-5, 0, 0)") !=
+    CHECK(n.find("Hooke −k (|d| − L) d̂ = −10 · (1.5 − 1) · (1, 0, 0) = (−5, 0, 0)") !=
           std::string::npos);
-    CHECK(n.find("Total F = (-5.5, 0, 0)") != std::string::npos);
+    CHECK(n.find("Total F = (−5.5, 0, 0)") != std::string::npos);
     CHECK(n.find("= (1.55, 0, 0)") != std::string::npos);
     CHECK(n.find("= (0.225, 0, 0)") != std::string::npos);
     in.integrator = Integrator::RK4;

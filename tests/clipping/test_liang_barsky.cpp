@@ -153,8 +153,8 @@ TEST_CASE("liang-barsky: each step reports its line, numbers and variables", "[c
           "dx = x1 − x0 = 4, dy = y1 − y0 = 4; start with t_enter = 0 and t_leave = 1.");
     CHECK(t.steps[1].line == 8);
     CHECK(t.steps[1].narration ==
-          "Edge 1 (left, x = 1): p_1 = −dx = -4, q_1 = x0 − xmin = -1. p < 0, entering: "
-          "r_1 = q/p = -1/-4 = 0.25, so t_enter = max(0, 0.25) = 0.25.");
+          "Edge 1 (left, x = 1): p_1 = −dx = −4, q_1 = x0 − xmin = −1. p < 0, entering: "
+          "r_1 = q/p = −1/−4 = 0.25, so t_enter = max(0, 0.25) = 0.25.");
     CHECK(t.steps[4].line == 10);
     CHECK(t.steps[4].narration ==
           "Edge 4 (top, y = 4): p_4 = dy = 4, q_4 = ymax − y0 = 2. p > 0, leaving: "

@@ -292,12 +292,12 @@ TEST_CASE("sutherland-hodgman: each step reports its line, numbers and variables
           "(in → in), output P = (2, 1).");
     CHECK(t.steps[6].line == 10);
     CHECK(t.steps[6].narration ==
-          "S = (2, 1) is inside (side 8 ≥ 0) and P = (6, 3) is outside (side -8 < 0): case 2 "
-          "(going out); SP crosses AB at t = 8/(8 − (-8)) = 0.5, I = (4, 2), output I.");
+          "S = (2, 1) is inside (side 8 ≥ 0) and P = (6, 3) is outside (side −8 < 0): case 2 "
+          "(going out); SP crosses AB at t = 8/(8 − (−8)) = 0.5, I = (4, 2), output I.");
     CHECK(t.steps[7].line == 14);
     CHECK(t.steps[7].narration ==
-          "S = (6, 3) is outside (side -8 < 0) and P = (2, 6) is inside (side 8 ≥ 0): case 4 "
-          "(going in); SP crosses AB at t = -8/(-8 − 8) = 0.5, I = (4, 4.5), output I, then "
+          "S = (6, 3) is outside (side −8 < 0) and P = (2, 6) is inside (side 8 ≥ 0): case 4 "
+          "(going in); SP crosses AB at t = −8/(−8 − 8) = 0.5, I = (4, 4.5), output I, then "
           "P = (2, 6).");
     CHECK(t.steps[8].event == "edge-done");
     CHECK(t.steps[8].line == 16);
@@ -357,7 +357,7 @@ TEST_CASE("sutherland-hodgman: each step reports its line, numbers and variables
 
     Traced cw = run_traced({{{0, 0}, {0, 4}, {4, 4}, {4, 0}}, {{2, 1}, {6, 3}, {2, 6}}});
     CHECK(cw.steps[0].narration ==
-          "The window's signed area is -16 < 0, so it runs clockwise and inside means right of "
+          "The window's signed area is −16 < 0, so it runs clockwise and inside means right of "
           "each edge (on the edge counts as inside); the input list is the polygon's 3 "
           "vertices.");
     CHECK(std::get<long long>(find(cw.steps[0], "orient")) == -1);
@@ -423,7 +423,7 @@ TEST_CASE("sutherland-hodgman: bad input names the field", "[clipping][sutherlan
     CHECK(refuse({{-inf, 0}, {4, 0}, {4, 4}}, tri) ==
           "window[0][0]: must be a finite number (got -inf)");
     CHECK(refuse(kSquare, {{1, 1}, {3, 1}, {2e200, 3}}) ==
-          "polygon[2][0]: must be at most 1e100 in size (got 2e+200)");
+          "polygon[2][0]: must be at most 1e100 in size (got 2 × 10²⁰⁰)");
     CHECK_THROWS_AS(SutherlandHodgman::start({kSquare, {{1, 1}, {inf, 1}, {2, 3}}}),
                     cg::InputError);
     // Accepted: a polygon with repeated or collinear vertices, and a self-crossing one.

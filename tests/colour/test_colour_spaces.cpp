@@ -105,7 +105,7 @@ TEST_CASE("colour-spaces: (0.3, 0.8, 0.5) worked by hand", "[colour][colour-spac
         CHECK_THAT(t.steps[0].narration,
                    Catch::Contains("Y = 0.299·0.3 + 0.587·0.8 + 0.114·0.5 = 0.6163"));
         CHECK_THAT(t.steps[1].narration,
-                   Catch::Contains("I = 0.596·0.3 − 0.274·0.8 − 0.322·0.5 = -0.2014 (as "
+                   Catch::Contains("I = 0.596·0.3 − 0.274·0.8 − 0.322·0.5 = −0.2014 (as "
                                    "0.596(R − G) + 0.322(G − B)"));
     }
 }
@@ -437,7 +437,7 @@ TEST_CASE(
     CHECK(one(Space::Hsl, Space::Rgb, {720 + 120, 1, 0.5}) == dvec3(0, 1, 0));
     CHECK(one(Space::Hsv, Space::Hsv, {400, 0.5, 0.5}).x == Approx(40));
     const auto t = traced(Space::Hsv, Space::Rgb, {{-30, 0.5, 0.8}});
-    CHECK_THAT(t.steps[0].narration, Catch::Contains("(H = -30° is 330° modulo 360)"));
+    CHECK_THAT(t.steps[0].narration, Catch::Contains("(H = −30° is 330° modulo 360)"));
     // A hue just below 0 lands on 0, never 360.
     const dvec3 nearly_red = one(Space::Rgb, Space::Hsv, {1, 0, 1e-17});
     CHECK(nearly_red.x == 0);
@@ -475,13 +475,13 @@ TEST_CASE("colour-spaces: bad input names the field", "[colour][colour-spaces]")
     CHECK(error_of(id, R"({"from": "rgb", "to": "hsv", "colors": [[0.3, 1.8, 0.5]]})") ==
           "colors[0][1]: RGB's G must be in [0, 1] (got 1.8)");
     CHECK(error_of(id, R"({"from": "hsv", "to": "rgb", "colors": [[400, 0.5, -0.1]]})") ==
-          "colors[0][2]: HSV's V must be in [0, 1] (got -0.1)");
+          "colors[0][2]: HSV's V must be in [0, 1] (got −0.1)");
     CHECK(error_of(id, R"({"from": "hsl", "to": "rgb", "colors": [[0, 0, 0], [10, 2, 0.5]]})") ==
           "colors[1][1]: HSL's S must be in [0, 1] (got 2)");
     CHECK(error_of(id, R"({"from": "cmy", "to": "rgb", "colors": [[0, -1, 0]]})") ==
-          "colors[0][1]: CMY's M must be in [0, 1] (got -1)");
+          "colors[0][1]: CMY's M must be in [0, 1] (got −1)");
     CHECK(error_of(id, R"({"from": "xyz", "to": "rgb", "colors": [[0, 2e6, 0]]})") ==
-          "colors[0][1]: XYZ's Y must lie within ±1e6 (got 2e+06)");
+          "colors[0][1]: XYZ's Y must lie within ±1e6 (got 2000000)");
     CHECK(error_of(id, R"({"from": "rgb", "to": "hsv", "colors": []})") ==
           "colors: must list at least one colour [a, b, c]");
     CHECK(error_of(id, R"({"from": "hsv", "to": "rgb", "colors": [[0.3, 0.8]]})") ==

@@ -47,8 +47,8 @@ TEST_CASE("format: short, deterministic numbers", "[format]") {
     CHECK(cg::num(0.25) == "0.25");
     CHECK(cg::num(-0.0) == "0");
     CHECK(cg::num(1.0 / 3.0) == "0.333333");
-    CHECK(cg::num(2.5e-12) == "2.5e-12");
-    CHECK(cg::num(glm::dvec2(1, -2)) == "(1, -2)");
+    CHECK(cg::num(2.5e-12) == "2.5 × 10⁻¹²");
+    CHECK(cg::num(glm::dvec2(1, -2)) == "(1, −2)");
     CHECK(cg::to_text(cg::Value{std::vector<double>{1, 2.5}}) == "(1, 2.5)");
     CHECK(cg::to_text(cg::Value{true}) == "true");
 }

@@ -136,7 +136,7 @@ TEST_CASE("bezier-patch: a bilinear patch at (1/2, 1/2) worked by hand", "[curve
     CHECK_THAT(t.steps[3].narration, Catch::Contains("∂P/∂t = 1·((2, 4, 2) − (2, 0, 0)) = (0, 4, 2)"));
     CHECK_THAT(t.steps[3].narration, Catch::Contains("∂P/∂s = (4, 0, 2)"));
     CHECK(t.steps[4].line == 6);
-    CHECK_THAT(t.steps[4].narration, Catch::Contains("∂P/∂s × ∂P/∂t = (-8, -8, 16)"));
+    CHECK_THAT(t.steps[4].narration, Catch::Contains("∂P/∂s × ∂P/∂t = (−8, −8, 16)"));
     CHECK(t.steps[5].line == 7);
     CHECK_THAT(t.steps[5].narration, Catch::Contains("9 vertices"));
     CHECK_THAT(t.steps[5].narration, Catch::Contains("8 in all"));
@@ -377,7 +377,7 @@ TEST_CASE("bezier-patch: s and t outside [0, 1] are refused unless extrapolating
                       "s: must lie in [0, 1] (got 1.5); give \"extrapolate\": true to evaluate "
                       "outside the segment");
     in = bilinear(0.5, -0.25);
-    CHECK_THROWS_WITH(BezierPatch::start(in), Catch::StartsWith("t: must lie in [0, 1] (got -0.25)"));
+    CHECK_THROWS_WITH(BezierPatch::start(in), Catch::StartsWith("t: must lie in [0, 1] (got −0.25)"));
     in.extrapolate = true;
     in.s = 1.5;
     const Traced t = run_traced(in);

@@ -69,7 +69,7 @@ TEST_CASE("bezier-spline closed: a square loop worked by hand", "[curves][bezier
         CHECK_FALSE(j.c2);
     }
     CHECK_THAT(t.steps[0].narration,
-               Catch::Contains("v₀ = (P₁ − P₃)/2 = ((2, 0) − (0, 2))/2 = (1, -1)") &&
+               Catch::Contains("v₀ = (P₁ − P₃)/2 = ((2, 0) − (0, 2))/2 = (1, −1)") &&
                    Catch::Contains("the neighbours wrap around"));
     CHECK_THAT(t.steps[7].narration,
                Catch::Contains("Segment 3, from P₃ to P₀") && Catch::Contains("closes the loop"));

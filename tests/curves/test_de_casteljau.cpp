@@ -155,7 +155,7 @@ TEST_CASE("de-casteljau: extrapolation is refused unless asked for, and then sai
           1e-12);
     in.t = -1001;
     CHECK_THROWS_WITH(DeCasteljau::start(in),
-                      "t: must be within ±1000 even when extrapolating (got -1001)");
+                      "t: must be within ±1000 even when extrapolating (got −1001)");
 }
 
 TEST_CASE("de-casteljau: bad input names the field", "[curves][de-casteljau]") {

@@ -1,9 +1,13 @@
 // Lessons, exam generators and worked examples, for every algorithm and every lesson file.
 #include <catch2/catch.hpp>
 
+#include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
+
+#include "core/format.hpp"
 
 #include "io/exam.hpp"
 #include "io/lesson.hpp"
@@ -204,4 +208,139 @@ TEST_CASE("worked: an unknown preset lists the known ones", "[worked][errors]") 
     auto r = cg::test::cgsandbox({"worked", "liang-barsky", "--preset", "nope"});
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Catch::Contains("no preset \"nope\"") && Catch::Contains("a segment crossing two edges"));
+}
+
+namespace {
+
+// The numbers in a text written in scientific notation — %g's "5.55e-17", or the short
+// "5.55 × 10⁻¹⁷" — with their values.
+std::vector<std::pair<std::string, double>> scientific_numbers(const std::string& text) {
+    static const std::string superscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    std::vector<std::pair<std::string, double>> out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(text[i])) ||
+            (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.')))
+            continue;
+        std::size_t j = i;
+        while (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.')) ++j;
+        const double mantissa = std::strtod(text.substr(i, j - i).c_str(), nullptr);
+        const bool negative = (i >= 1 && text[i - 1] == '-') || (i >= 3 && text.compare(i - 3, 3, "−") == 0);
+        int exponent = 0;
+        bool found = false;
+        std::size_t end = j;
+        if (j + 1 < text.size() && (text[j] == 'e' || text[j] == 'E') &&
+            (text[j + 1] == '-' || text[j + 1] == '+' || std::isdigit(static_cast<unsigned char>(text[j + 1])))) {
+            std::size_t k = j + 1;
+            if (text[k] == '-' || text[k] == '+') ++k;
+            const std::size_t digits = k;
+            while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
+            if (k > digits) {
+                exponent = std::stoi(text.substr(j + 1, k - j - 1));
+                found = true;
+                end = k;
+            }
+        } else if (text.compare(j, 12, " \\times 10^{") == 0) {  // LaTeX: 2.5 \times 10^{-5}
+            const std::size_t close = text.find('}', j + 12);
+            if (close != std::string::npos) {
+                exponent = std::stoi(text.substr(j + 12, close - j - 12));
+                found = true;
+                end = close + 1;
+            }
+        } else {
+            // "× 10⁻⁵" after the mantissa, or "10⁻⁵" alone (the mantissa 1 left out).
+            std::size_t k = j;
+            bool times = false;
+            if (text.compare(k, 6, " × 10") == 0) k += 6, times = true;  // "×" is two bytes
+            else if (text.compare(i, j - i, "10") == 0) k = j, times = false;
+            else k = std::string::npos;
+            if (k != std::string::npos) {
+                bool minus = false;
+                if (text.compare(k, 3, "⁻") == 0) minus = true, k += 3;
+                int e = 0, n = 0;
+                for (bool more = true; more;) {
+                    more = false;
+                    for (int d = 0; d < 10; ++d)
+                        if (text.compare(k, superscripts[d].size(), superscripts[d]) == 0) {
+                            e = e * 10 + d, ++n, k += superscripts[d].size(), more = true;
+                            break;
+                        }
+                }
+                if (n > 0) {
+                    exponent = minus ? -e : e;
+                    found = true;
+                    end = k;
+                }
+                (void)times;
+            }
+        }
+        const bool bare_power = text.compare(i, j - i, "10") == 0 && end > j && text.compare(j, 6, " × 10") != 0;
+        // "10²" is ten squared (b² with b = 10): a bare power of ten is how num() writes only
+        // the tiny (10⁻⁵) and the huge (10¹⁵).
+        if (bare_power && exponent >= 0 && exponent < 15) found = false;
+        if (!found) continue;
+        const double v = (bare_power ? 1.0 : mantissa) * std::pow(10.0, exponent) * (negative ? -1 : 1);
+        out.push_back({text.substr(i, end - i), v});
+        i = end;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("numbers: a sandbox text shows no rounding noise in scientific notation",
+          "[lessons][numbers]") {
+    CHECK(scientific_numbers("t = 5.55e-17 and s = 1e+06").size() == 2);
+    REQUIRE(scientific_numbers("2.5 × 10⁻⁵ and 10¹⁵").size() == 2);
+    CHECK(scientific_numbers("2.5 × 10⁻⁵ and 10¹⁵")[0].second == Approx(2.5e-5));
+    CHECK(scientific_numbers("2.5 × 10⁻⁵ and 10¹⁵")[1].second == Approx(1e15));
+    CHECK(scientific_numbers("b² = 10² = 100").empty());
+    CHECK(scientific_numbers("F4 culled, x2 = 3, Liang-Barsky").empty());
+    // The formatter: rounding noise of a zero is 0, one minus sign, short powers of ten.
+    CHECK(cg::num(5.551115123125783e-17) == "0");
+    CHECK(cg::num(-1.2246467991473532e-16) == "0");
+    CHECK(cg::num(-0.0) == "0");
+    CHECK(cg::num(-2.5) == "−2.5");
+    CHECK(cg::num(0.49999999999999994) == "0.5");
+    CHECK(cg::num(2.9999999999999996) == "3");
+    CHECK(cg::num(2.5e-5) == "2.5 × 10⁻⁵");
+    CHECK(cg::num(-1e-5) == "−10⁻⁵");
+    CHECK(cg::num(1234567.0) == "1234567");
+    CHECK(cg::num(1309.87, 3) == "1310");
+    CHECK(cg::num(2e15) == "2 × 10¹⁵");
+    CHECK(cg::tex(-2.5e-5) == "-2.5 \\times 10^{-5}");
+    CHECK(cg::text_minus("t = -0.5, x-axis, (-1, 2), a - b, Liang-Barsky, x-2") ==
+          "t = −0.5, x-axis, (−1, 2), a − b, Liang-Barsky, x-2");
+}
+
+TEST_CASE("numbers: no narrated step of any lesson preset prints rounding noise",
+          "[lessons][numbers]") {
+    // Rounding noise: a value within 1e-12 of zero, or of a whole number, in scientific
+    // notation (5.55e-17, −1.22 × 10⁻¹⁶, 1 + 4e-16 shown as 1e+00).
+    const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", registry());
+    std::size_t steps = 0, noisy = 0;
+    for (const cg::Lesson& l : lib.lessons) {
+        const cg::Algorithm* a = registry().find(l.algorithm);
+        REQUIRE(a);
+        for (const cg::LessonPreset& p : l.presets) {
+            auto run = a->create(p.input);
+            for (std::size_t k = 1; !run->done(); ++k) {
+                cg::StepInfo info;
+                run->step(&info);
+                ++steps;
+                for (const std::string* text : {&info.narration, &info.math})
+                    for (const auto& [shown, v] : scientific_numbers(*text)) {
+                        // (A big whole number, 10⁶, is not noise; 3e+00 is.)
+                        const bool noise = std::fabs(v) < 1e-12 ||
+                                           (std::fabs(v) < 1e6 &&
+                                            std::fabs(v - std::round(v)) < 1e-12 * std::fabs(v));
+                        if (noise && ++noisy <= 40)
+                            FAIL_CHECK(l.id << " \"" << p.name << "\" step " << k << ": " << shown
+                                            << " in: " << *text);
+                    }
+            }
+        }
+    }
+    INFO(steps << " steps read");
+    CHECK(noisy == 0);
+    CHECK(steps > 10000);
 }

@@ -172,7 +172,7 @@ TEST_CASE("barycentric: exam cases worked by hand", "[raster][barycentric]") {
         CHECK(r.results[0].inside);
         const Traced t =
             cg::test::run_traced<Barycentric>(in2({{{0, 0}, {1, 3}, {4, 0}}}, {{1, 1}}));
-        CHECK_THAT(t.steps[0].narration, Catch::Contains("= -6 < 0: A, B, C turn clockwise"));
+        CHECK_THAT(t.steps[0].narration, Catch::Contains("= −6 < 0: A, B, C turn clockwise"));
     }
     SECTION("a vertex: weights (0, 1, 0), on two edges") {
         const Traced t =
@@ -487,12 +487,12 @@ TEST_CASE("barycentric: bad input names the field", "[raster][barycentric]") {
           "barycentric coordinates are not defined");
     CHECK_THAT(error_of(id, R"({"triangle": [[0, 0], [1e6, 0], [5e5, 1e-6]], "points": [[1, 1]]})"),
                Catch::StartsWith("triangle: is degenerate: A, B and C lie (nearly) on one line — "
-                                 "its height is 1e-06, below 1e-9 of its longest edge (1e+06)"));
+                                 "its height is 10⁻⁶, below 1e-9 of its longest edge (1000000)"));
     CHECK(error_of(id, R"({"triangle": [[0, 0], [1e101, 0], [1, 3]], "points": [[1, 1]]})") ==
-          "triangle[1][0]: must lie within ±1e100 (got 1e+101): products of coordinates must not "
+          "triangle[1][0]: must lie within ±1e100 (got 10¹⁰¹): products of coordinates must not "
           "overflow");
     CHECK(error_of(id, R"({"triangle": [[0, 0], [4, 0], [1, 3]], "points": [[1e-300, 1]]})") ==
-          "points[0][0]: must be 0 or at least 1e-100 in size (got 1e-300): products of "
+          "points[0][0]: must be 0 or at least 1e-100 in size (got 10⁻³⁰⁰): products of "
           "coordinates must not underflow");
     CHECK(error_of(id, R"({"triangle": [[0, 0], [4, 0], [1, 3]], "points": [[1, 1]], "p": 1})") ==
           "p: is not a known field (expected: triangle, points)");

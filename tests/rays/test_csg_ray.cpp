@@ -32,6 +32,10 @@ using glm::dvec3;
 
 namespace {
 
+// A number as JSON text (cg::num is for students' eyes: "−1", "10⁻⁵").
+std::string jnum(double x, int = 17) { return cg::json(x).dump(); }
+
+
 using cg::test::events;
 using cg::test::registry;
 using Run = cg::test::JsonTraced;
@@ -51,19 +55,19 @@ std::string error_of(const std::string& text) {
 using Events = std::vector<std::string>;
 
 std::string sphere(double r, dvec3 c = dvec3(0.0), const std::string& name = "") {
-    std::string s = R"({"primitive": {"type": "sphere", "params": {"r": )" + cg::num(r) + "}";
+    std::string s = R"({"primitive": {"type": "sphere", "params": {"r": )" + jnum(r) + "}";
     if (c != dvec3(0.0))
-        s += R"(, "transform": [[1, 0, 0, )" + cg::num(c.x) + "], [0, 1, 0, " + cg::num(c.y) +
-             "], [0, 0, 1, " + cg::num(c.z) + "], [0, 0, 0, 1]]";
+        s += R"(, "transform": [[1, 0, 0, )" + jnum(c.x) + "], [0, 1, 0, " + jnum(c.y) +
+             "], [0, 0, 1, " + jnum(c.z) + "], [0, 0, 0, 1]]";
     s += "}";
     if (!name.empty()) s += R"(, "name": ")" + name + "\"";
     return s + "}";
 }
 
 std::string box(dvec3 lo, dvec3 hi, const std::string& name = "") {
-    std::string s = R"({"primitive": {"type": "box", "min": [)" + cg::num(lo.x) + ", " +
-                    cg::num(lo.y) + ", " + cg::num(lo.z) + "], \"max\": [" + cg::num(hi.x) +
-                    ", " + cg::num(hi.y) + ", " + cg::num(hi.z) + "]}";
+    std::string s = R"({"primitive": {"type": "box", "min": [)" + jnum(lo.x) + ", " +
+                    jnum(lo.y) + ", " + jnum(lo.z) + "], \"max\": [" + jnum(hi.x) +
+                    ", " + jnum(hi.y) + ", " + jnum(hi.z) + "]}";
     if (!name.empty()) s += R"(, "name": ")" + name + "\"";
     return s + "}";
 }
@@ -76,7 +80,7 @@ std::string node(const char* op, const std::string& l, const std::string& r,
 
 std::string input(const std::string& tree, dvec3 o, dvec3 d) {
     auto p = [](dvec3 v) {
-        return "[" + cg::num(v.x, 17) + ", " + cg::num(v.y, 17) + ", " + cg::num(v.z, 17) + "]";
+        return "[" + jnum(v.x, 17) + ", " + jnum(v.y, 17) + ", " + jnum(v.z, 17) + "]";
     };
     return R"({"tree": )" + tree + R"(, "origin": )" + p(o) + R"(, "direction": )" + p(d) + "}";
 }
@@ -108,7 +112,7 @@ TEST_CASE("csg-ray: the course's question, a sphere minus a sphere", "[rays][csg
     CHECK(r.result["from"] == "B");
     CHECK(r.result["entering"] == true);
     CHECK(r.steps[0].narration.find("t² − 10t + 21") != std::string::npos);
-    CHECK(r.steps[1].narration.find("E_m = (0, 0, -4)") != std::string::npos);
+    CHECK(r.steps[1].narration.find("E_m = (0, 0, −4)") != std::string::npos);
     CHECK(r.steps[2].narration.find("reversed") != std::string::npos);
     CHECK(r.steps[3].narration.find("reversed") != std::string::npos);
 }
@@ -639,8 +643,8 @@ TEST_CASE("csg-ray: exam problems are nice and answered right", "[rays][csg-ray]
     const CsgRay::Input course = CsgRay::Input{
         cg::csg_json::tree(algorithm().example()["tree"], "tree"), {0, 0, -5}, {0, 0, 1}};
     CHECK(CsgRay::question(course).rfind(
-              "The ray E + t·d = (0, 0, -5) + t·(0, 0, 1) meets the solid A − B, where A = sphere "
-              "r = 2 centred at (0, 0, 0); B = sphere r = 1 centred at (0, 0, -1).",
+              "The ray E + t·d = (0, 0, −5) + t·(0, 0, 1) meets the solid A − B, where A = sphere "
+              "r = 2 centred at (0, 0, 0); B = sphere r = 1 centred at (0, 0, −1).",
               0) == 0);
 }
 

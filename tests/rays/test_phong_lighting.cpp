@@ -241,12 +241,12 @@ TEST_CASE("phong-lighting: bad input is refused with the field named",
                }),
                Catch::StartsWith("eye: must differ from point"));
     CHECK_THAT(with([](cg::json& j) { j["material"]["shininess"] = -1; }),
-               Catch::StartsWith("material.shininess: must not be negative (got -1)"));
+               Catch::StartsWith("material.shininess: must not be negative (got −1)"));
     CHECK(with([](cg::json& j) { j["material"]["kd"] = -0.5; }) ==
-          "material.kd: must not be negative: a reflection coefficient (got -0.5)");
+          "material.kd: must not be negative: a reflection coefficient (got −0.5)");
     CHECK(with([](cg::json& j) {
               j["material"]["ks"] = {0.1, -0.5, 0};
-          }) == "material.ks[1]: must not be negative: a reflection coefficient (got -0.5)");
+          }) == "material.ks[1]: must not be negative: a reflection coefficient (got −0.5)");
     CHECK_THAT(with([](cg::json& j) {
                    j["material"]["ka"] = {0.1, 0.5};
                }),
@@ -261,7 +261,7 @@ TEST_CASE("phong-lighting: bad input is refused with the field named",
                Catch::StartsWith("lights[0].attenuation: must not be all zero"));
     CHECK(with([](cg::json& j) {
               j["lights"][0]["attenuation"] = {1, -1, 0};
-          }) == "lights[0].attenuation[1]: must not be negative (got -1)");
+          }) == "lights[0].attenuation[1]: must not be negative (got −1)");
     CHECK_THAT(with([](cg::json& j) {
                    j["lights"][0] = cg::json::parse(
                        R"({"direction": [0, 0, -1], "intensity": 1, "attenuation": [1, 1, 0]})");

@@ -339,7 +339,7 @@ TEST_CASE("ray-quadric: bad input is refused with the field named", "[rays][ray-
     CHECK(
         error_of(
             R"({"quadric": {"type": "sphere", "params": {"r": -1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
-        "quadric.params.r: must be positive: it is a semi-axis length (got -1)");
+        "quadric.params.r: must be positive: it is a semi-axis length (got −1)");
     CHECK(
         error_of(
             R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 0, "r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})") ==
@@ -465,7 +465,7 @@ TEST_CASE("ray-quadric: exam problems are nice and answered right", "[rays][ray-
     course.origin = {1, 1, 5};
     course.direction = {0, 0, -1};
     CHECK(RayQuadric::question(course).rfind(
-              "Intersect the ray (1, 1, 5) + t·(0, 0, -1) with the elliptic paraboloid x² + y² = "
+              "Intersect the ray (1, 1, 5) + t·(0, 0, −1) with the elliptic paraboloid x² + y² = "
               "z. Is there a hit",
               0) == 0);
 }

@@ -430,21 +430,21 @@ TEST_CASE("distribution: bad fields are refused, naming them",
           "settings.pattern: must be \"regular\", \"random\", \"jittered\" or \"poisson\", got a "
           "string (\"stripes\")");
     CHECK(error_of(with("", "", "", R"(, "aperture": -1)")) ==
-          "camera.aperture: must be a lens radius between 0 and 1e6 (got -1)");
+          "camera.aperture: must be a lens radius between 0 and 1e6 (got −1)");
     CHECK(error_of(with("", "", "", R"(, "shutter": -0.5)")) ==
-          "camera.shutter: must be a time span between 0 and 1e6 (got -0.5)");
+          "camera.shutter: must be a time span between 0 and 1e6 (got −0.5)");
     CHECK(error_of(with("", R"(, "samples": 4)")) ==
           "lights[0].samples: is for an area light (\"area\"): a point light needs one shadow ray");
     CHECK(error_of(with("", R"(, "area": {"shape": "sphere"})")) ==
           "lights[0].area.shape: must be \"rectangle\" or \"disc\" (got \"sphere\")");
     CHECK(error_of(with("", R"(, "area": {"shape": "disc", "radius": -1})")) ==
-          "lights[0].area.radius: must be between 0 and 1e12 (got -1)");
+          "lights[0].area.radius: must be between 0 and 1e12 (got −1)");
     CHECK(error_of(with("", R"(, "area": {"shape": "disc", "radius": 1, "normal": [0, 0, 0]})")) ==
           "lights[0].area.normal: must not be the zero vector: it is the disc's normal");
     CHECK(error_of(with("", "", R"(, "gloss_samples": 4)")) ==
           "materials[0].gloss_samples: needs \"gloss\" > 0: a mirror (gloss 0) reflects one ray");
     CHECK(error_of(with("", "", R"(, "gloss": -2)")) ==
-          "materials[0].gloss: must be a Phong exponent between 0 (a mirror) and 1e6 (got -2)");
+          "materials[0].gloss: must be a Phong exponent between 0 (a mirror) and 1e6 (got −2)");
     CHECK(error_of(
               R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]}, "materials": [{"name": "m"}],
         "lights": [{"direction": [0, -1, 0], "area": {"shape": "disc", "radius": 1}}], "objects": []})") ==
@@ -452,7 +452,7 @@ TEST_CASE("distribution: bad fields are refused, naming them",
     CHECK(error_of(
               R"({"camera": {"eye": [0, 0, 5], "center": [0, 0, 0]}, "materials": [{"name": "m"}],
         "objects": [{"type": "sphere", "params": {"r": 1}, "material": "m", "velocity": [1e300, 0, 0]}]})") ==
-          "objects[0].velocity[0]: must be a finite number of magnitude at most 1e12 (got 1e+300)");
+          "objects[0].velocity[0]: must be a finite number of magnitude at most 1e12 (got 10³⁰⁰)");
     // Too many samples for a costly scene: the work limit names samples_per_pixel.
     CHECK_THAT(error_of(with(R"(, "samples_per_pixel": 1024)",
                              R"(, "area": {"shape": "disc", "radius": 1}, "samples": 1024)",

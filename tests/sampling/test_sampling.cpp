@@ -277,7 +277,7 @@ TEST_CASE("sampling: errors name the field", "[sampling][errors]") {
     CHECK(error_of(R"({"signal": [], "rate": 10, "duration": 1})") ==
           "signal: must list between 1 and 16 sines (got 0)");
     CHECK(error_of(R"({"signal": [{"frequency": -1}], "rate": 10, "duration": 1})") ==
-          "signal[0].frequency: must be between 0 and 10¹² (got -1)");
+          "signal[0].frequency: must be between 0 and 10¹² (got −1)");
     CHECK(error_of(R"({"signal": [{"frequency": 1}], "rate": 0, "duration": 1})") ==
           "rate: must be positive and at most 10¹² (got 0)");
     CHECK(error_of(R"({"signal": [{"frequency": 1}], "rate": 10, "duration": 1000})") ==
@@ -300,11 +300,11 @@ TEST_CASE("sampling: errors name the field", "[sampling][errors]") {
     CHECK(error_of(
               R"({"image": {"type": "checkerboard", "horizon": -2}, "width": 8, "height": 8})") ==
           "image.horizon: must be above the bottom row: between 0 (excluded) and 10⁶ pixels (got "
-          "-2)");
+          "−2)");
     CHECK(
         error_of(
             R"({"image": {"type": "zone-plate"}, "width": 256, "height": 256, "supersampling": {"samples": 256}})") ==
-        "supersampling.samples: makes 1.67772e+07 samples for the image; at most 4·10⁶ are "
+        "supersampling.samples: makes 16777216 samples for the image; at most 4·10⁶ are "
         "allowed");
 }
 

@@ -549,7 +549,7 @@ TEST_CASE("supersampling: errors name the field", "[sampling][supersampling][err
                    scene + "}") ==
           "radius: only the poisson pattern has a radius (the pattern is random)");
     CHECK(error_of(R"({"pattern": "poisson", "samples": 4, "radius": -1, "pixel": [0, 0], )" +
-                   scene + "}") == "radius: must be between 0 and 2 pixels (got -1)");
+                   scene + "}") == "radius: must be between 0 and 2 pixels (got −1)");
     CHECK(error_of(R"({"pattern": "random", "samples": 4, "pixel": [0.5, 0], )" + scene + "}") ==
           "pixel[0]: must be an integer pixel index, got 0.5");
     CHECK(error_of(R"({"pattern": "random", "samples": 4, "pixel": [0, 0], "filter": "sinc", )" +

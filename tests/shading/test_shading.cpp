@@ -300,7 +300,7 @@ TEST_CASE("shading: Phong at the same pixel normalises the interpolated normal",
     for (const auto& s : t.steps)
         if (s.event == "pixel-phong") {
             seen = true;
-            CHECK_THAT(s.narration, Catch::Contains("n = Σ λ_k n_k = (0.1875, 0.1875, -0.875)"));
+            CHECK_THAT(s.narration, Catch::Contains("n = Σ λ_k n_k = (0.1875, 0.1875, −0.875)"));
             CHECK_THAT(s.narration, Catch::Contains("|n| = 0.9143"));
         }
     CHECK(seen);
@@ -586,20 +586,20 @@ TEST_CASE("shading: bad input is refused with the field named", "[shading]") {
               for (int v = 0; v < 9; ++v) j["mesh"]["normals"].push_back({0, 0, v == 4 ? 0 : -1});
           }) == "mesh.normals[4]: must not be the zero vector: a vertex needs a direction");
     CHECK(error_with([](cg::json& j) { j["mesh"]["vertices"][3][2] = 2e9; }) ==
-          "mesh.vertices[3][2]: must lie within ±1e9 (got 2e+09)");
+          "mesh.vertices[3][2]: must lie within ±1e9 (got 2000000000)");
     CHECK(error_with([](cg::json& j) { j["model"] = "toon"; }) ==
           "model: must be \"flat\", \"gouraud\" or \"phong\" (got \"toon\")");
     CHECK(error_with([](cg::json& j) { j["lighting"]["model"] = "gouraud"; }) ==
           "lighting.model: must be \"phong\" or \"blinn-phong\" (got \"gouraud\")");
     CHECK(error_with([](cg::json& j) { j["lighting"]["material"]["kd"] = -0.5; }) ==
-          "lighting.material.kd: must not be negative: a reflection coefficient (got -0.5)");
+          "lighting.material.kd: must not be negative: a reflection coefficient (got −0.5)");
     CHECK(error_with([](cg::json& j) { j["lighting"]["lights"] = "sun"; }) ==
           "lighting.lights: must be a list of lights, got a string (\"sun\")");
     CHECK(error_with([](cg::json& j) { j["lighting"]["lights"][0]["intensity"] = 1e300; }) ==
-          "lighting.lights[0].intensity: is too large (got 1e+300)");
+          "lighting.lights[0].intensity: is too large (got 10³⁰⁰)");
     CHECK(error_with([](cg::json& j) {
               j["lighting"]["eye"] = {0, 0, 1e200};
-          }) == "lighting.eye[2]: must lie within ±1e100 (got 1e+200)");
+          }) == "lighting.eye[2]: must lie within ±1e100 (got 10²⁰⁰)");
     CHECK_THAT(error_with([](cg::json& j) {
                    j["lighting"]["point"] = {0, 0, 0};
                }),
@@ -756,6 +756,6 @@ TEST_CASE("shading: a huge given normal narrates its true length, not inf", "[sh
     cg::StepInfo info;
     run->step(&info);
     CHECK(info.event == "normals-given");
-    CHECK_THAT(info.narration, Catch::Contains("n_2 = (-1e+300, 0.6, -0.8)/1e+300 = (-1, 6e-301, -8e-301)"));
+    CHECK_THAT(info.narration, Catch::Contains("n_2 = (−10³⁰⁰, 0.6, −0.8)/10³⁰⁰ = (−1, 0, 0)"));
     CHECK(info.narration.find("inf") == std::string::npos);
 }

@@ -79,7 +79,7 @@ TEST_CASE("projective-shadow: a triangle under a point light onto the floor, by 
     CHECK_THAT(t.steps[2].narration,
                Catch::Contains("w′ = 2 > 0; divide by w′: s0 = (4, 0, 0) / 2 = (2, 0, 0)"));
     CHECK_THAT(t.steps[1].narration,
-               Catch::Contains("M = [4, 0, 0, 0; 0, 0, 0, 0; 0, 0, 4, 0; 0, -1, 0, 4]"));
+               Catch::Contains("M = [4, 0, 0, 0; 0, 0, 0, 0; 0, 0, 4, 0; 0, −1, 0, 4]"));
 }
 
 TEST_CASE("projective-shadow: the sun, a tilted plane, a turned-round plane, by hand",
@@ -126,7 +126,7 @@ TEST_CASE("projective-shadow: degenerate vertices are their own events",
     CHECK(t.result.valid == std::vector<bool>{true, true, false, false, false});
     CHECK(t.result.shadow[1] == dvec3(2, 0, 1));  // its own shadow
     // Above the light: M p = 3p − 4L = [3, 0, 6, −1]; the anti-shadow (−3, 0, −6) is named.
-    CHECK_THAT(t.steps[5].narration, Catch::Contains("(-3, 0, -6)"));
+    CHECK_THAT(t.steps[5].narration, Catch::Contains("(−3, 0, −6)"));
     CHECK_THAT(t.steps[5].narration, Catch::Contains("anti-shadow"));
     // Under the floor: M p = 3p + L = [3, 0, 0, 4]: the false shadow (0.75, 0, 0).
     CHECK_THAT(t.steps[6].narration, Catch::Contains("(0.75, 0, 0)"));

@@ -252,7 +252,7 @@ TEST_CASE("shadow-map: the exam case by hand, a card straight under the light",
     CHECK_THAT(t.steps[5].narration, Catch::Contains("texel (i, j) = (2, 1)"));
     CHECK_THAT(t.steps[5].narration, Catch::Contains("= 4.9 > d_map = 3"));
     CHECK_THAT(t.steps[0].narration,
-               Catch::Contains("light_from_world = [1, 0, 0, 0; 0, 0, -1, 0; 0, 1, 0, -5; 0, 0, "
+               Catch::Contains("light_from_world = [1, 0, 0, 0; 0, 0, −1, 0; 0, 1, 0, −5; 0, 0, "
                                "0, 1]"));
     // The floor's diagonal x = z passes through four texel centres: both halves cover them.
     CHECK_THAT(t.steps[1].narration, Catch::Contains("covers 10 texel centres"));

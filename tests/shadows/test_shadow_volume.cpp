@@ -227,7 +227,7 @@ TEST_CASE("shadow-volume: the box over the floor, by hand", "[shadows][shadow-vo
     lit[2] = lit[3] = true;
     CHECK(t.result.lit == lit);
     CHECK_THAT(t.steps[2].narration, Catch::Contains("n_f · (L − a) = 12 > 0"));
-    CHECK_THAT(t.steps[8].narration, Catch::Contains("n_f · (L − a) = -4 < 0"));
+    CHECK_THAT(t.steps[8].narration, Catch::Contains("n_f · (L − a) = −4 < 0"));
     // The top's four outer edges, as they run in the lit top faces; its diagonal (4, 6) is not.
     CHECK(t.result.silhouette == std::vector<std::array<int, 2>>{{6, 5}, {5, 4}, {4, 7}, {7, 6}});
     // Ray 0 to (0, 0, 0): enters through the quad of edge (6, 5) (the side x = (6 − y) / 3) at

@@ -131,11 +131,11 @@ TEST_CASE("arbitrary-axis: the steps show their matrices as numbers",
     const Traced t = run_traced({{1, 1, 0}, 90, {{1, 0, 0}}});
     CHECK(t.steps[2].narration ==
           "In the xy plane c = (1, 1, 0) makes the angle γ with the x axis: cos γ = r/|a| = "
-          "0.7071, sin γ = a_y/|a| = 0.7071, γ = 45°. R_z(−γ) = [0.7071 0.7071 0; -0.7071 0.7071 "
+          "0.7071, sin γ = a_y/|a| = 0.7071, γ = 45°. R_z(−γ) = [0.7071 0.7071 0; −0.7071 0.7071 "
           "0; 0 0 1] turns c about z onto the x axis: R_z(−γ) c = (1.414, 0, 0) = |a| e_x.");
     CHECK(t.steps[3].narration ==
           "The axis now is the x axis: rotate by θ = 90° about it (cos θ = 0, sin θ = 1): R_x(θ) = "
-          "[1 0 0; 0 0 -1; 0 1 0].");
+          "[1 0 0; 0 0 −1; 0 1 0].");
     CHECK_THAT(t.steps[3].math, Catch::EndsWith("\\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ 0 & 0 & -1 "
                                                 "& 0 \\\\ 0 & 1 & 0 & 0 \\\\ 0 & 0 & 0 & 1 "
                                                 "\\end{bmatrix}"));

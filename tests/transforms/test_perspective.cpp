@@ -84,10 +84,10 @@ TEST_CASE("perspective: exam cases worked by hand", "[transforms][perspective]")
                                "point-to-view", "behind-eye", "no-divide"});
         CHECK(t.steps[2].narration ==
               "fov_y = 90°: c = cot(45°) = 1, c/a = 1 for aspect 1; near 1, far 3: (f+n)/(f−n) = 2, "
-              "−2fn/(f−n) = -3, and w = z. P = [1 0 0 0; 0 1 0 0; 0 0 2 -3; 0 0 1 0]: depth n goes "
+              "−2fn/(f−n) = −3, and w = z. P = [1 0 0 0; 0 1 0 0; 0 0 2 −3; 0 0 1 0]: depth n goes "
               "to z_ndc = −1, depth f to +1.");
         CHECK(t.steps[7].narration ==
-              "P1_clip = P p_view = (-1, 1, 5, 4): w = 4 > 0 but z > w (beyond the far plane): "
+              "P1_clip = P p_view = (−1, 1, 5, 4): w = 4 > 0 but z > w (beyond the far plane): "
               "outside the view volume (it would be clipped).");
         CHECK_THAT(t.steps[14].narration, Catch::Contains("mirrored through the centre"));
     }
@@ -286,7 +286,7 @@ TEST_CASE("perspective: bad input names the field", "[transforms][perspective]")
     CHECK_THROWS_WITH(Perspective::start(with([](auto& i) { i.near = 0; })),
                       "near: must be positive: the near plane lies in front of the eye (got 0)");
     CHECK_THROWS_WITH(Perspective::start(with([](auto& i) { i.near = -1; })),
-                      "near: must be positive: the near plane lies in front of the eye (got -1)");
+                      "near: must be positive: the near plane lies in front of the eye (got −1)");
     CHECK_THROWS_WITH(Perspective::start(with([](auto& i) { i.far = 1; })), "far: must be greater than near (1 ≤ 1)");
     CHECK_THROWS_WITH(Perspective::start(with([](auto& i) { i.fov_y_deg = 180; })),
                       "fov_y_deg: must be between 0 and 180 degrees, both excluded (got 180)");

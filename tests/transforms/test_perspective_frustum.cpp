@@ -74,9 +74,9 @@ TEST_CASE("perspective frustum: a stereo eye's off-axis frustum, worked by hand"
         CHECK(t.result.ndc[3]->y == 0);
         REQUIRE(t.steps[2].event == "projection-matrix");
         const std::string& say = t.steps[2].narration;
-        CHECK_THAT(say, Catch::Contains("near rectangle x ∈ [-1, 3], y ∈ [-1, 1] at depth n = 1"));
+        CHECK_THAT(say, Catch::Contains("near rectangle x ∈ [−1, 3], y ∈ [−1, 1] at depth n = 1"));
         CHECK_THAT(say, Catch::Contains("2n/(r−l) = 0.5, 2n/(t−b) = 1"));
-        CHECK_THAT(say, Catch::Contains(gl ? "(r+l)/(r−l) = 0.5" : "−(r+l)/(r−l) = -0.5"));
+        CHECK_THAT(say, Catch::Contains(gl ? "(r+l)/(r−l) = 0.5" : "−(r+l)/(r−l) = −0.5"));
         CHECK_THAT(say, Catch::Contains("off-axis"));
         CHECK_THAT(t.steps[2].math, Catch::Contains("\\frac{2n}{r-l}"));
         REQUIRE(t.steps[0].vars.size() >= 6);
@@ -191,10 +191,10 @@ TEST_CASE("perspective frustum: bad input names the field", "[transforms][perspe
     CHECK_THROWS_WITH(Perspective::start(frustum(C::Course, nan, 1, -1, 1, 1, 3)),
                       "frustum.left: must be a finite number (got NaN)");
     CHECK_THROWS_WITH(Perspective::start(frustum(C::Course, -1e308, 1e308, -1, 1, 1, 3)),
-                      Catch::StartsWith("frustum.right: left -1e+308 and right 1e+308 give a "
+                      Catch::StartsWith("frustum.right: left −10³⁰⁸ and right 10³⁰⁸ give a "
                                         "matrix too large or too small"));
     CHECK_THROWS_WITH(Perspective::start(frustum(C::Course, -1, 1, 0, 1e-310, 1, 3)),
-                      Catch::StartsWith("frustum.top: bottom 0 and top 1e-310 give a matrix"));
+                      Catch::StartsWith("frustum.top: bottom 0 and top 10⁻³¹⁰ give a matrix"));
 
     using cg::test::error_of;
     const std::string good =

@@ -224,7 +224,7 @@ TEST_CASE("quaternion: exam cases worked by hand", "[transforms][quaternion]") {
         const Traced t = run_traced(single(Op::ToMatrix, {1, 0, 0, 1}));
         CHECK(cg::test::events(t) == std::vector<std::string>{"normalise", "terms", "matrix"});
         CHECK(mdiff(*t.result.matrix, rows({0, -1, 0}, {1, 0, 0}, {0, 0, 1})) < 1e-15);
-        CHECK_THAT(t.steps[2].narration, Catch::Contains("= [0 -1 0; 1 0 0; 0 0 1]"));
+        CHECK_THAT(t.steps[2].narration, Catch::Contains("= [0 −1 0; 1 0 0; 0 0 1]"));
     }
     SECTION("from_matrix: a quarter turn, and 180° turns where w = 0") {
         const Traced t = run_traced(from_matrix(rows({0, -1, 0}, {1, 0, 0}, {0, 0, 1})));
@@ -492,7 +492,7 @@ TEST_CASE("quaternion: bad input names the field", "[transforms][quaternion]") {
                       "matrix: is not a rotation: its columns must be orthonormal (RᵀR = I "
                       "within 0.001), but max |RᵀR − I| = 3");
     CHECK_THROWS_WITH(Quaternion::start(from_matrix(rows({1, 0, 0}, {0, 1, 0}, {0, 0, -1}))),
-                      "matrix: is a reflection (det R = -1), not a rotation: a rotation has det "
+                      "matrix: is a reflection (det R = −1), not a rotation: a rotation has det "
                       "R = 1");
     CHECK_THROWS_WITH(Quaternion::start(from_matrix(rows({1, 0, 0}, {0, 1, 0.01}, {0, 0, 1}))),
                       Catch::StartsWith("matrix: is not a rotation"));

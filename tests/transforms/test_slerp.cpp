@@ -65,7 +65,7 @@ TEST_CASE("slerp: exam cases worked by hand", "[transforms][slerp]") {
         CHECK_THAT(t.steps[2].narration,
                    Catch::Contains("w0 = sin((1−u)ω)/sin ω = 0.7422, w1 = sin(uω)/sin ω = 0.3949"));
         CHECK_THAT(t.steps[1].narration,
-                   Catch::Contains("q1 q̄0 = [0.5, 0.5, 0.5, -0.5] is a turn by 120°"));
+                   Catch::Contains("q1 q̄0 = [0.5, 0.5, 0.5, −0.5] is a turn by 120°"));
     }
     SECTION("identity to a half turn about y, half way: a quarter turn about y") {
         const Traced t = run_traced({{1, 0, 0, 0}, {0, 0, 1, 0}, 0.5});

@@ -371,7 +371,7 @@ TEST_CASE("trackball: bad input names the field", "[transforms][arcball][virtual
     const std::vector<dvec2> two = {{1, 1}, {2, 2}};
     CHECK_THROWS_WITH(Arcball::start({{0, 100}, two, {}}), "viewport[0]: the width must be positive (got 0)");
     CHECK_THROWS_WITH(VirtualSphere::start({{100, -5}, two, {}}),
-                      "viewport[1]: the height must be positive (got -5)");
+                      "viewport[1]: the height must be positive (got −5)");
     CHECK_THROWS_WITH(Arcball::start({{nan, 100}, two, {}}), "viewport[0]: must be a finite number (got NaN)");
     CHECK_THROWS_WITH(Arcball::start({{100, 100}, {{1, 1}}, {}}),
                       "samples: needs at least 2 mouse samples to make a drag (got 1)");

@@ -105,9 +105,9 @@ TEST_CASE("window-viewport: exam cases worked by hand", "[viewing][window-viewpo
         CHECK(row(t.result.device_from_window, 0) == std::array<double, 3>{128, 0, 0});
         CHECK(row(t.result.device_from_window, 1) == std::array<double, 3>{0, -128, 768});
         CHECK_THAT(t.steps[0].narration,
-                   Catch::Contains("viewport 1024 × -768 (aspect |Lv/Hv| = 1.333)") &&
+                   Catch::Contains("viewport 1024 × −768 (aspect |Lv/Hv| = 1.333)") &&
                        Catch::Contains("Hv < 0: y is flipped (a negative scale"));
-        CHECK_THAT(t.steps[5].narration, Catch::Contains("y by Hv/2 = -768/2 = -384"));
+        CHECK_THAT(t.steps[5].narration, Catch::Contains("y by Hv/2 = −768/2 = −384"));
 
         const cg::Registry registry = cg::builtin_registry();
         const cg::Algorithm& a = *registry.find("window-viewport");
@@ -144,8 +144,8 @@ TEST_CASE("window-viewport: the steps say what they compute", "[viewing][window-
           "ratios differ. x will be scaled by Lv/Lw = 80 but y by Hv/Hw = 120, so shapes come out "
           "stretched (a circle becomes an ellipse).");
     CHECK(t.steps[2].narration ==
-          "P0 = (2, 1): x_ndc = 2·(2 − 0)/8 − 1 = -0.5, y_ndc = 2·(1 − 0)/4 "
-          "− 1 = -0.5, so P0_ndc = (-0.5, -0.5).");
+          "P0 = (2, 1): x_ndc = 2·(2 − 0)/8 − 1 = −0.5, y_ndc = 2·(1 − 0)/4 "
+          "− 1 = −0.5, so P0_ndc = (−0.5, −0.5).");
     CHECK(t.steps[8].narration ==
           "P2_ndc = (0, 0.5): x_d = 0 + (0 + 1)·640/2 = 320, y_d = 0 + (0.5 "
           "+ 1)·480/2 = 360, so P2_device = (320, 360).");

@@ -255,9 +255,9 @@ TEST_CASE("haar-wavelet: the narration of [8 4 1 3], level by level", "[wavelets
     const auto t = cg::test::run_traced<HaarWavelet>(signal({8, 4, 1, 3}));
     CHECK(cg::test::events(t) ==
           std::vector<std::string>{"level", "level", "reconstruct", "reconstruct", "summary"});
-    CHECK(t.steps[0].narration.find("(8, 4) → s = 6, d = 2; (1, 3) → s = 2, d = -1") !=
+    CHECK(t.steps[0].narration.find("(8, 4) → s = 6, d = 2; (1, 3) → s = 2, d = −1") !=
           std::string::npos);
-    CHECK(t.steps[1].narration.find("c = [4, 2, 2, -1]") != std::string::npos);
+    CHECK(t.steps[1].narration.find("c = [4, 2, 2, −1]") != std::string::npos);
     CHECK(t.steps[3].narration.find("[8, 4, 1, 3]") != std::string::npos);
 }
 
@@ -476,7 +476,7 @@ TEST_CASE("haar-wavelet: bad input names the field and the reason", "[wavelets][
               .rfind("mode: must be \"1d\", \"standard\" or \"nonstandard\"", 0) == 0);
     CHECK(err(R"({"signal": [1, 2], "threshold": 1, "keep": 0.5})") ==
           "keep: give either threshold or keep, not both");
-    CHECK(err(R"({"signal": [1, 2], "threshold": -1})") == "threshold: must be ≥ 0 (got -1)");
+    CHECK(err(R"({"signal": [1, 2], "threshold": -1})") == "threshold: must be ≥ 0 (got −1)");
     CHECK(err(R"({"signal": [1, 2], "keep": 0})").rfind("keep: must be a fraction in (0, 1]", 0) ==
           0);
     CHECK(
