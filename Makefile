@@ -5,9 +5,10 @@
 #               then build the sanitizer configuration and run the whole suite again under
 #               AddressSanitizer + UBSan, with a 30-second run of each fuzz target
 # and a few more: make build, make test-normal, make test-sanitize, make bench, make fuzz,
-# make screenshots, make clean; and the browser build: make web, make serve-web, make test-web.
+# make screenshots, make contact-sheets, make clean; and the browser build: make web,
+# make serve-web, make test-web.
 .PHONY: all deps configure build build-sanitize run test test-normal test-sanitize bench fuzz \
-	screenshots clean web serve-web test-web
+	screenshots contact-sheets clean web serve-web test-web
 
 FUZZ_SECONDS ?= 600
 
@@ -73,6 +74,13 @@ serve-web: web
 # The browser test (tests/web/): headless Chromium on the built site.
 test-web: web
 	@/usr/bin/python3 tests/web/test_web.py build-web/site
+
+# Every lesson's presets at their first, middle and last step, one sheet a lesson, for looking
+# over the pictures as a student meets them: build/contact-sheets/<lesson>.png (the canvas of a
+# 1280×720 window; SHEET_SIZE=1920x1080 for the other size, LESSONS="id …" for some only).
+SHEET_SIZE ?= 1280x720
+contact-sheets: build
+	@build/bin/cgsandbox contact-sheet $(LESSONS) --size $(SHEET_SIZE) --out-dir build/contact-sheets
 
 clean:
 	rm -rf build build-sanitize build-bench build-web/cmake build-web/site

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -133,7 +134,7 @@ int cmd_lessons(const Registry& registry, bool check) {
 
 struct RenderOptions {
     std::string id, input_path, checkpoint_path, out_path, size = "800x600";
-    std::string lesson, preset;
+    std::string lesson, preset, layout_path;
     std::optional<std::uint64_t> exam_seed;
     long long step = -1;  // -1: the end of the run (in exam practice: step 0)
     bool full_ui = false;
@@ -174,6 +175,8 @@ void apply_lesson(const Registry& registry, const RenderOptions& o, Checkpoint& 
 }
 
 int cmd_render(const Registry& registry, const RenderOptions& o) {
+    if (o.out_path.empty() && o.layout_path.empty())
+        throw UserError{"", "render needs --out FILE.png, --layout FILE.json, or both"};
     Checkpoint c;
     std::string source;
     const bool studying = !o.lesson.empty() || !o.preset.empty() || o.exam_seed;
@@ -221,12 +224,45 @@ int cmd_render(const Registry& registry, const RenderOptions& o) {
     // Check the input before opening any window, so bad input is reported as such.
     create_run(find_algorithm(registry, c.algorithm), c.input, source);
     try {
-        viewer::render_png(registry, c, width, height, o.out_path, o.full_ui);
+        viewer::render_png(registry, c, width, height, o.out_path, o.full_ui, o.layout_path);
     } catch (const InputError& e) {
         fail(source, e);
     } catch (const std::exception& e) {
         std::cerr << "cgsandbox: render: " << e.what() << "\n";
         return 1;
+    }
+    return 0;
+}
+
+// contact-sheet: a lesson's presets at their first, middle and last step, for looking over.
+int cmd_contact_sheet(const Registry& registry, const std::vector<std::string>& ids,
+                      const std::string& out_dir, const std::string& size) {
+    int width = 0, height = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || x != 'x' ||
+        width < 320 || height < 240 || width > 8192 || height > 8192)
+        throw UserError{"", "--size must be WxH with 320 <= W <= 8192, 240 <= H <= 8192, got \"" +
+                                size + "\""};
+    const LessonLibrary lessons = load_lesson_library(registry);
+    std::vector<const Lesson*> chosen;
+    for (const std::string& id : ids) {
+        const Lesson* l = lessons.find(id);
+        if (!l) throw UserError{"", "no lesson \"" + id + "\"; `cgsandbox lessons` lists them"};
+        chosen.push_back(l);
+    }
+    if (ids.empty())
+        for (const Lesson& l : lessons.lessons) chosen.push_back(&l);
+    std::error_code error;
+    std::filesystem::create_directories(out_dir, error);
+    for (const Lesson* l : chosen) {
+        const std::string path = out_dir + "/" + l->id + ".png";
+        try {
+            viewer::contact_sheet(registry, lessons, *l, width, height, path);
+        } catch (const std::exception& e) {
+            std::cerr << "cgsandbox: contact-sheet: " << l->id << ": " << e.what() << "\n";
+            return 1;
+        }
+        std::cout << path << "\n";
     }
     return 0;
 }
@@ -323,7 +359,9 @@ int cli_main(int argc, char** argv) {
     render->add_option("--checkpoint,-c", ro.checkpoint_path, "A checkpoint saved by the viewer");
     render->add_option("--step,-s", ro.step, "Step to show (default: the end, or the checkpoint's)")
         ->check(CLI::NonNegativeNumber);
-    render->add_option("--out,-o", ro.out_path, "Output PNG file")->required();
+    render->add_option("--out,-o", ro.out_path, "Output PNG file (needed unless --layout is given)");
+    render->add_option("--layout", ro.layout_path,
+                       "Also write what the canvas placed where, as JSON (alone: no GPU needed)");
     render->add_option("--size", ro.size, "Image size WxH (default 800x600)");
     render->add_flag("--full", ro.full_ui, "The whole viewer window, not only the canvas");
     render->add_option("--lesson,-l", ro.lesson,
@@ -380,6 +418,14 @@ int cli_main(int argc, char** argv) {
         ->check(CLI::Range(1, 1000000));
 
     SceneRenderOptions so;
+    std::vector<std::string> sheet_ids;
+    std::string sheet_dir = "contact-sheets", sheet_size = "1280x720";
+    auto* sheet = app.add_subcommand(
+        "contact-sheet", "Each lesson's presets at their first, middle and last step, one PNG a lesson");
+    sheet->add_option("LESSON", sheet_ids, "Lesson ids (default: every lesson)");
+    sheet->add_option("--out-dir,-o", sheet_dir, "Folder for <lesson>.png (default contact-sheets)");
+    sheet->add_option("--size", sheet_size, "The window's size WxH (default 1280x720)");
+
     auto* render_scene = app.add_subcommand(
         "render-scene", "Ray trace a scene file to a PNG, on every core (no display needed)");
     render_scene->add_option("SCENE", so.scene_path, "Scene JSON file (see the README), or - for stdin")
@@ -411,6 +457,7 @@ int cli_main(int argc, char** argv) {
         if (*exam) return cmd_exam(registry, eo);
         if (*lessons) return cmd_lessons(registry, check_lessons);
         if (*render_scene) return cmd_render_scene(so);
+        if (*sheet) return cmd_contact_sheet(registry, sheet_ids, sheet_dir, sheet_size);
         if (auto code = study.run(registry)) return *code;
         if (*complexity) {
             if (topic == "accel")  // brute force run and compared on every ray up to n = 10⁴

@@ -23,13 +23,13 @@ std::uint32_t grey_cell(double g) {
     return (v << 24) | (v << 16) | (v << 8) | 0xffu;
 }
 
-struct Panel {
+struct Place {
     glm::dvec2 origin;  // the lower left corner, in the scene
     int height;
     glm::dvec2 at(glm::dvec2 p) const { return origin + glm::dvec2(p.x, height - p.y); }
 };
 
-void image(Scene& scene, const Panel& panel, const Image& img, double lo, double hi, int rows) {
+void image(Scene& scene, const Place& panel, const Image& img, double lo, double hi, int rows) {
     PixelGrid2 g;
     g.origin = panel.origin;
     g.width = img.width;
@@ -50,7 +50,7 @@ void image(Scene& scene, const Panel& panel, const Image& img, double lo, double
                               false});
 }
 
-void lines(Scene& scene, const Panel& panel, const std::vector<Line>& ls, Role role) {
+void lines(Scene& scene, const Place& panel, const std::vector<Line>& ls, Role role) {
     for (std::size_t i = 0; i < ls.size(); ++i) {
         scene.segments.push_back({panel.at(ls[i].p), panel.at(ls[i].q),
                                   ls.size() <= 8 ? std::to_string(i) : std::string(),
@@ -71,8 +71,8 @@ void ImageMorph::draw(const State& s, Scene& scene) {
         for (double g : img->v) lo = std::min(lo, g), hi = std::max(hi, g);
     const int made = s.row;
     const double top = h + gap;
-    const Panel pa{{0, top}, h}, pb{{w + gap, top}, h}, pm{{2 * (w + gap), top}, h};
-    const Panel wa{{0, 0}, h}, wb{{w + gap, 0}, h}, pd{{2 * (w + gap), 0}, h};
+    const Place pa{{0, top}, h}, pb{{w + gap, top}, h}, pm{{2 * (w + gap), top}, h};
+    const Place wa{{0, 0}, h}, wb{{w + gap, 0}, h}, pd{{2 * (w + gap), 0}, h};
     image(scene, pa, in.image_a, lo, hi, h);
     image(scene, pb, in.image_b, lo, hi, h);
     image(scene, pm, f.morph, lo, hi, made);
@@ -83,7 +83,7 @@ void ImageMorph::draw(const State& s, Scene& scene) {
     for (const Pair& p : in.lines) la.push_back(p.a), lb.push_back(p.b);
     lines(scene, pa, la, Role::Kept);
     lines(scene, pb, lb, Role::Entering);
-    for (const Panel* p : {&pm, &wa, &wb}) lines(scene, *p, f.lines, Role::Active);
+    for (const Place* p : {&pm, &wa, &wb}) lines(scene, *p, f.lines, Role::Active);
     const std::string a = "α = " + num(f.alpha, 3);
     scene.labels.push_back({pa.origin + glm::dvec2(0, -label), "A (its lines)", {Role::Kept}});
     scene.labels.push_back({pb.origin + glm::dvec2(0, -label), "B (its lines)", {Role::Entering}});

@@ -6,19 +6,33 @@
 // GUI tests can look for a role's colour in the pixels. A primitive may override the role's
 // colour with an explicit RGBA for data that carries its own colour (a polygon's fill).
 //
-// Coordinates are world coordinates, right-handed, y up. Handles are the draggable points:
-// each is bound to the input fields it edits (JSON pointers such as "/p0/0"), so the viewer
-// can offer dragging for any algorithm without knowing what the fields mean.
+// A scene has up to two main views and any number of panels, each with coordinates of its own:
+//   - the 2D world (the Scene's own Layer2: world coordinates, right-handed, y up, on a grid);
+//   - the 3D view (faces3, segments3, …, seen through the viewer's orbiting camera);
+//   - panels: a chart (axes with their own ticks and units; series as lines, dots or bars) or
+//     an image (a raster shown pixel-exact, filling its panel, its title outside it).
+// The viewer lays the views out side by side or stacked, fits each to its content, and never
+// draws a chart or an image on the world's grid. `focus2`/`focus3` mark what the step is about:
+// the 3D camera frames it, and the layout checks that it is large enough to see.
+//
+// Handles are the draggable points: each is bound to the input fields it edits (JSON pointers
+// such as "/p0/0"), so the viewer can offer dragging for any algorithm without knowing what
+// the fields mean.
+//
+// Labels are placed by the viewer, not where they are anchored: each has a priority (higher is
+// placed first and dropped last; the role adds to it, Active most); a label that finds no free
+// place beside its anchor gets a short leader line, then a shortened text ("t = 0.5" → "t"),
+// and is dropped rather than drawn over another label, the title or a panel's edge.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <string>
-#include <vector>
-
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 namespace cg {
 
@@ -37,9 +51,9 @@ enum class Role : std::uint8_t {
 
 struct Style {
     Role role = Role::Neutral;
-    float width = 2.0f;        // line width in screen pixels
+    float width = 2.0f;  // line width in screen pixels
     bool dashed = false;
-    std::uint32_t rgba = 0;    // 0xRRGGBBAA overriding the role colour; 0 = use the role
+    std::uint32_t rgba = 0;  // 0xRRGGBBAA overriding the role colour; 0 = use the role
     bool operator==(const Style&) const = default;
 };
 
@@ -57,6 +71,7 @@ struct Point2 {
     std::string label;
     Style style;
     float radius = 5.0f;  // screen pixels
+    int priority = 0;     // of its label (see the top of this file)
 };
 
 struct Segment2 {
@@ -64,6 +79,7 @@ struct Segment2 {
     std::string label;  // drawn at the midpoint
     Style style;
     bool arrow = false;  // arrowhead at b
+    int priority = 0;    // of its label
 };
 
 struct Polygon2 {
@@ -86,6 +102,7 @@ struct Label2 {
     glm::dvec2 p;
     std::string text;
     Style style;
+    int priority = 0;
 };
 
 // A raster of square cells, one world unit each: cell (i, j) covers [i, i+1) × [j, j+1) from
@@ -118,6 +135,7 @@ struct Point3 {
     std::string label;
     Style style;
     float radius = 5.0f;  // screen pixels
+    int priority = 0;     // of its label
 };
 
 struct Segment3 {
@@ -125,6 +143,10 @@ struct Segment3 {
     std::string label;  // drawn at the midpoint
     Style style;
     bool arrow = false;  // arrowhead at b (a vector, an axis, a normal)
+    // At least this long on screen, in pixels, lengthened from a along b − a when the camera
+    // makes it shorter: a normal or a direction that must be seen whatever the zoom. 0: as is.
+    float min_pixels = 0;
+    int priority = 0;  // of its label
 };
 
 // A flat polygon (triangle, quad, face), filled at `alpha` in its role colour or rgba.
@@ -142,6 +164,7 @@ struct Label3 {
     glm::dvec3 p;
     std::string text;
     Style style;
+    int priority = 0;
 };
 
 // A coordinate frame: the columns of `axes` drawn as x (red), y (green), z (blue) arrows
@@ -154,7 +177,9 @@ struct Frame3 {
     float alpha = 1.0f;
 };
 
-struct Scene {
+// ---- The 2D primitives of one coordinate system: the world, or a panel's own ----
+
+struct Layer2 {
     std::vector<PixelGrid2> grids;        // drawn first, under everything
     std::vector<HalfPlane2> half_planes;  // then these, under the rest
     std::vector<Polygon2> polygons;
@@ -163,6 +188,64 @@ struct Scene {
     std::vector<Label2> labels;
     std::vector<Handle2> handles;
 
+    bool has_2d() const {
+        return !grids.empty() || !half_planes.empty() || !polygons.empty() || !segments.empty() ||
+               !points.empty() || !labels.empty();
+    }
+};
+
+// ---- Panels: a chart or an image beside the main views, in coordinates of its own ----
+
+// A chart's axis: its label (with the unit: "t (s)", "E (J)") and the range shown.
+struct Axis {
+    std::string label;
+    double lo = 0, hi = 0;      // lo < hi: this range; otherwise fitted to the data, padded
+    bool log = false;           // logarithmic (values must be above 0; others are left out)
+    bool include_zero = false;  // a fitted range reaches 0 (an energy, a count: not a wobble)
+};
+
+// A line of a chart's legend: the series' style beside its name.
+struct LegendEntry {
+    std::string text;
+    Style style;
+    bool marker = false;  // a dot rather than a line
+};
+
+enum class PanelKind : std::uint8_t {
+    Chart,  // x and y in the axes' units, scaled apart; ticks and numbers of its own
+    Image,  // grids[0] is the raster; one cell a pixel or more, square; overlays in cell units
+};
+
+// The primitives (Layer2) are in the panel's coordinates: a chart's data (x, y), an image's
+// cells ((0, 0) at the raster's bottom-left corner, y up, as PixelGrid2 has it).
+struct Panel : Layer2 {
+    PanelKind kind = PanelKind::Chart;
+    std::string title;  // over the panel, never over its content
+    Axis x, y;          // a chart's axes
+    std::vector<LegendEntry> legend;
+    double weight = 1;  // its share of the canvas against the other views (the main view: 1.5)
+};
+
+// The bounds of something the step is about, for framing and for the layout's check that it
+// can be seen (at least 24 px across). 2D: in the world (panel -1) or in panel `panel`.
+struct Focus2 {
+    glm::dvec2 lo, hi;
+    int panel = -1;
+};
+struct Focus3 {
+    glm::dvec3 lo, hi;
+};
+
+// How the 3D view looks at the scene when it is fitted (and on a reset): by default from above
+// the +x/+z quadrant in perspective; a planar construction asks for a view along the normal of
+// its plane, orthographic, so that right angles look right.
+struct ViewHint3 {
+    glm::dvec3 look{0, 0, 0};  // the direction the camera looks along; zero: the default view
+    glm::dvec3 up{0, 1, 0};    // what is up on screen (must not be parallel to look)
+    bool orthographic = false;
+};
+
+struct Scene : Layer2 {
     // 3D content (empty for 2D algorithms). `extent3` is the radius of the region worth
     // showing around the origin, for the canvas's initial zoom (0: fit to the content).
     std::vector<Face3> faces3;
@@ -171,16 +254,72 @@ struct Scene {
     std::vector<Label3> labels3;
     std::vector<Frame3> frames3;
     double extent3 = 0;
+    ViewHint3 view3;
+
+    std::vector<Panel> panels;  // charts and images, beside the world and the 3D view
+    std::vector<Focus2> focus2;
+    std::vector<Focus3> focus3;  // the 3D camera frames these when there are any
 
     bool has_3d() const {
         return !faces3.empty() || !segments3.empty() || !points3.empty() || !labels3.empty() ||
                !frames3.empty();
     }
-    bool has_2d() const {
-        return !grids.empty() || !half_planes.empty() || !polygons.empty() || !segments.empty() ||
-               !points.empty() || !labels.empty();
-    }
     void clear() { *this = Scene{}; }
 };
+
+// ---- Building panels and focus ----
+
+// A new chart panel, returned for filling: its series go in as lines, dots or bars.
+inline Panel& add_chart(Scene& scene, std::string title, Axis x, Axis y) {
+    Panel p;
+    p.kind = PanelKind::Chart;
+    p.title = std::move(title);
+    p.x = std::move(x);
+    p.y = std::move(y);
+    scene.panels.push_back(std::move(p));
+    return scene.panels.back();
+}
+
+// A new image panel showing `raster` (its origin is set to (0, 0)).
+inline Panel& add_image(Scene& scene, std::string title, PixelGrid2 raster) {
+    Panel p;
+    p.kind = PanelKind::Image;
+    p.title = std::move(title);
+    raster.origin = {0, 0};
+    p.grids.push_back(std::move(raster));
+    scene.panels.push_back(std::move(p));
+    return scene.panels.back();
+}
+
+// A series as a polyline, named in the legend when `name` is given.
+inline void add_line(Panel& chart, std::vector<glm::dvec2> points, Style style,
+                     std::string name = {}) {
+    if (!name.empty()) chart.legend.push_back({std::move(name), style, false});
+    chart.polygons.push_back({std::move(points), style, false, false});
+}
+
+// A series as dots.
+inline void add_dots(Panel& chart, const std::vector<glm::dvec2>& points, Style style,
+                     std::string name = {}, float radius = 3.5f) {
+    if (!name.empty()) chart.legend.push_back({std::move(name), style, true});
+    for (glm::dvec2 p : points) chart.points.push_back({p, "", style, radius});
+}
+
+// A series as bars from y = 0, each `width` wide (in x units) and centred on its x.
+inline void add_bars(Panel& chart, const std::vector<glm::dvec2>& points, double width, Style style,
+                     std::string name = {}) {
+    if (!name.empty()) chart.legend.push_back({std::move(name), style, false});
+    for (glm::dvec2 p : points) {
+        const double a = p.x - width / 2, b = p.x + width / 2;
+        chart.polygons.push_back({{{a, 0}, {b, 0}, {b, p.y}, {a, p.y}}, style, true, true});
+    }
+}
+
+inline void add_focus(Scene& scene, glm::dvec3 a, glm::dvec3 b) {
+    scene.focus3.push_back({glm::min(a, b), glm::max(a, b)});
+}
+inline void add_focus(Scene& scene, glm::dvec2 a, glm::dvec2 b, int panel = -1) {
+    scene.focus2.push_back({glm::min(a, b), glm::max(a, b), panel});
+}
 
 }  // namespace cg

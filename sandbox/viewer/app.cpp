@@ -56,6 +56,9 @@ bool on_key(Session& s, const SDL_KeyboardEvent& key) {
         case SDLK_p:
             if (!key.repeat) s.toggle_play();
             return true;
+        case SDLK_f:  // frame: fit the views to what the step is about
+            s.canvas.fit_pending = true;
+            return true;
         case SDLK_LEFT:
             if (navigating) return false;
             s.step_back();

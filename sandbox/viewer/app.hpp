@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "checkpoint.hpp"
+#include "io/lesson.hpp"
 #include "viewer/input.hpp"
 
 namespace cg::viewer {
@@ -70,8 +71,15 @@ class Viewer {
 // and step "k / n"); full_ui=true: the whole viewer window, with the checkpoint's lesson (from
 // default_lessons_dir()) or exam problem open in the left panel. Throws std::runtime_error with
 // a clear one-line message on failure (no display, an unknown lesson; bad input: let
-// cg::InputError propagate unchanged).
+// cg::InputError propagate unchanged). With `layout_path`, also writes there what the canvas
+// placed where (layout.hpp); with an empty `out_path`, only that, drawn without a GPU or a
+// window (layout_pass.hpp).
 void render_png(const Registry& registry, const Checkpoint& checkpoint, int width, int height,
-                const std::string& out_path, bool full_ui);
+                const std::string& out_path, bool full_ui, const std::string& layout_path = {});
+
+// A lesson's contact sheet: every preset a row, its first, middle and last step the columns,
+// each the canvas as a window of width x height shows it with the lesson open.
+void contact_sheet(const Registry& registry, const LessonLibrary& lessons, const Lesson& lesson,
+                   int width, int height, const std::string& out_path);
 
 }  // namespace cg::viewer

@@ -1,5 +1,6 @@
-// Sections: [view fitting] [interaction] [caption] [draw_canvas]: the 2D canvas, the 3D one
-// (canvas3d.cpp), or both side by side.
+// Sections: [view fitting] [interaction] [title] [views] [draw_canvas]: the title strip over
+// the views the layout gives (layout.hpp) — the 2D world, the 3D view (canvas3d.cpp), the
+// scene's charts and images (panel_draw.cpp).
 #include "viewer/canvas.hpp"
 
 #include <algorithm>
@@ -15,44 +16,43 @@
 #include "viewer/canvas3d.hpp"
 #include "viewer/canvas_draw.hpp"
 #include "viewer/im_colour.hpp"
+#include "viewer/layout.hpp"
 #include "viewer/palette.hpp"
 
 namespace cg::viewer {
 
 // --- [view fitting] --------------------------------------------------------------------------
 
-View2 fit_view(const Scene& scene, glm::dvec2 size) {
+Box bounds_of(const Layer2& layer) {
     const double inf = std::numeric_limits<double>::infinity();
-    glm::dvec2 lo{inf, inf}, hi{-inf, -inf};
+    Box b{{inf, inf}, {-inf, -inf}};
     auto add = [&](glm::dvec2 p) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+        b.min = glm::min(b.min, p);
+        b.max = glm::max(b.max, p);
     };
-    for (const PixelGrid2& g : scene.grids)
+    for (const PixelGrid2& g : layer.grids)
         add(g.origin), add(g.origin + glm::dvec2(g.width, g.height));
-    for (const Polygon2& poly : scene.polygons)
+    for (const Polygon2& poly : layer.polygons)
         for (glm::dvec2 p : poly.points) add(p);
-    for (const Segment2& s : scene.segments) add(s.a), add(s.b);
-    for (const Point2& p : scene.points) add(p.p);
-    for (const Label2& l : scene.labels) add(l.p);
-    for (const Handle2& h : scene.handles) add(h.p);
-    if (lo.x > hi.x) return View2{};  // nothing bounded: the origin at the default zoom
+    for (const Segment2& s : layer.segments) add(s.a), add(s.b);
+    for (const Point2& p : layer.points) add(p.p);
+    for (const Label2& l : layer.labels) add(l.p);
+    for (const Handle2& h : layer.handles) add(h.p);
+    return b;
+}
 
-    // Margins in pixels: room for labels beside the geometry, and for the caption on top.
-    constexpr double kSide = 60, kTop = 80, kBottom = 45;
-    const glm::dvec2 room{std::max(size.x - 2 * kSide, 40.0),
-                          std::max(size.y - kTop - kBottom, 40.0)};
-    const glm::dvec2 extent = hi - lo;
+View2 fit_view(const Layer2& layer, glm::dvec2 size, double margin) {
+    const Box b = bounds_of(layer);
+    if (b.min.x > b.max.x) return View2{};  // nothing bounded: the origin at the default zoom
+    const double inf = std::numeric_limits<double>::infinity();
+    const glm::dvec2 room{std::max(size.x - 2 * margin, 40.0), std::max(size.y - 2 * margin, 40.0)};
+    const glm::dvec2 extent = b.max - b.min;
     double zoom = 50;
     if (extent.x > 0 || extent.y > 0)
         zoom = std::min(extent.x > 0 ? room.x / extent.x : inf,
                         extent.y > 0 ? room.y / extent.y : inf);
-    zoom = std::clamp(zoom, 1e-9, 1e9);
-    // Centre the geometry in the room left between the margins (the caption's is larger).
-    glm::dvec2 centre = (lo + hi) / 2.0;
-    centre.y += (kTop - kBottom) / 2 / zoom;
-    return View2{centre, zoom};
+    return View2{(b.min + b.max) / 2.0, std::clamp(zoom, 1e-9, 1e9)};
 }
 
 // --- [interaction] ---------------------------------------------------------------------------
@@ -160,70 +160,94 @@ int interact(Session& s, const Scene& scene, const ScreenMap& map) {
     return hot;
 }
 
-// --- [caption] -------------------------------------------------------------------------------
+// --- [title] ---------------------------------------------------------------------------------
 
-// What the picture shows, in its top-left corner, so that a saved PNG explains itself; in the
-// window also how to use the canvas.
-struct Caption {
+// What the picture shows, in a strip over the views, so that a saved PNG explains itself: the
+// algorithm, then the step and its event; in the window also how to use the canvas, when
+// there is room. The strip grows to hold a title that does not fit on one line: never cut.
+struct Title {
     std::string title, detail, hint;
-    Box box{{0, 0}, {0, 0}};
 };
 
-Caption make_caption_box(Caption c, const ScreenMap& map, const Fonts& f);
-
-Caption make_caption(const ScreenMap& map, Session& s, bool interactive) {
-    Caption c;
-    if (!s.algorithm) return c;
-    c.title = s.algorithm->spec->title;
+Title make_title(Session& s, bool interactive, bool three, bool world) {
+    Title t;
+    if (!s.algorithm) return t;
+    t.title = s.algorithm->spec->title;
     const std::optional<std::size_t> n = s.length();
-    c.detail = "step " + std::to_string(s.index()) + " / " + (n ? std::to_string(*n) : "?");
+    t.detail = "step " + std::to_string(s.index()) + " / " + (n ? std::to_string(*n) : "?");
     if (const StepInfo* info = s.shown_step(); info && !info->event.empty())
-        c.detail += "  ·  " + info->event;
-    if (!s.input_error.empty()) c.detail += "  ·  input refused: showing the last good run";
+        t.detail += "  ·  " + info->event;
+    if (!s.input_error.empty()) t.detail += "  ·  input refused: showing the last good run";
     if (s.solution_hidden())  // its length would hint at the answer
-        c.detail = "exam problem " + std::to_string(s.exam.problem.seed) + "  ·  solution hidden";
-    // (Not on a narrow canvas, half of Compare's: it would run past the edge.)
-    if (interactive && map.canvas.max.x - map.canvas.min.x >= 560)
-        c.hint = "wheel: zoom  ·  right-drag: pan  ·  drag ■ to edit the input";
-    return make_caption_box(c, map, s.fonts);
+        t.detail = "exam problem " + std::to_string(s.exam.problem.seed) + "  ·  solution hidden";
+    if (interactive)
+        t.hint = three   ? "drag: orbit  ·  right-drag: pan  ·  wheel: zoom  ·  F: frame"
+                 : world ? "wheel: zoom  ·  right-drag: pan  ·  drag ■: edit  ·  F: frame"
+                         : "";
+    return t;
 }
 
-// Sizes the caption's box for its text, in the canvas's top-left corner.
-Caption make_caption_box(Caption c, const ScreenMap& map, const Fonts& f) {
-    double width = f.ui->CalcTextSizeA(f.ui->FontSize, FLT_MAX, 0, c.title.c_str()).x;
-    double height = f.ui->FontSize + 12;
-    for (const std::string* line : {&c.detail, &c.hint}) {
-        if (line->empty()) continue;
-        width = std::max<double>(
-            width, f.small->CalcTextSizeA(f.small->FontSize, FLT_MAX, 0, line->c_str()).x);
-        height += f.small->FontSize + 2;
+constexpr std::uint32_t kTitleStrip = 0xf7f8faff;
+constexpr std::uint32_t kTitleRule = 0xdcdfe4ff;
+
+// Draws the strip at the top of `canvas`; returns its height.
+double draw_title(ImDrawList* dl, const Box& canvas, const Title& t, const Fonts& f,
+                  LayoutRecord* record) {
+    if (t.title.empty()) return 0;
+    const double width = canvas.max.x - canvas.min.x, pad = 8;
+    const float wrap = static_cast<float>(std::max(width - 2 * pad, 10.0));
+    auto size = [](ImFont* font, const std::string& s, float w) {
+        return glm::dvec2(dv(font->CalcTextSizeA(font->FontSize, FLT_MAX, w, s.c_str())));
+    };
+    const glm::dvec2 title = size(f.ui, t.title, wrap);
+    const glm::dvec2 detail = size(f.small, t.detail, wrap);
+    const glm::dvec2 hint = size(f.small, t.hint, 0);
+    // One line when the title and the detail fit side by side, else the detail under it.
+    const bool one_line = title.y <= f.ui->FontSize * 1.5 && title.x + 24 + detail.x <= wrap;
+    const double height = one_line ? title.y + 2 * pad - 2 : title.y + detail.y + 2 * pad;
+    const Box strip{canvas.min, {canvas.max.x, canvas.min.y + height}};
+    dl->AddRectFilled(im(strip.min), im(strip.max), im_colour(kTitleStrip));
+    dl->AddLine(im({strip.min.x, strip.max.y - 0.5}), im({strip.max.x, strip.max.y - 0.5}),
+                im_colour(kTitleRule));
+    const glm::dvec2 at = canvas.min + glm::dvec2(pad, pad - 1);
+    dl->AddText(f.ui, f.ui->FontSize, im(at), im_colour(kCaptionText), t.title.c_str(), nullptr,
+                wrap);
+    const glm::dvec2 detail_at =
+        one_line
+            ? glm::dvec2(at.x + title.x + 24, at.y + (f.ui->FontSize - f.small->FontSize) / 2 + 1)
+            : glm::dvec2(at.x, at.y + title.y + 1);
+    dl->AddText(f.small, f.small->FontSize, im(detail_at), im_colour(kTickLabel), t.detail.c_str(),
+                nullptr, wrap);
+    // The hint, right-aligned on the last line, when it does not touch the text before it.
+    const double hint_x = canvas.max.x - pad - hint.x;
+    if (!t.hint.empty() && hint_x > detail_at.x + detail.x + 24)
+        dl->AddText(f.small, f.small->FontSize, im({hint_x, detail_at.y}), im_colour(kHintText),
+                    t.hint.c_str());
+    if (record) {
+        record->title = strip;
+        record->title_fits = height <= canvas.max.y - canvas.min.y;
     }
-    c.box.min = map.canvas.min + glm::dvec2(10, 10);
-    c.box.max = c.box.min + glm::dvec2(width + 16, height);
-    return c;
+    return height;
 }
 
-void draw_caption(ImDrawList* dl, const Caption& c, const Fonts& f) {
-    if (c.title.empty()) return;
-    dl->AddRectFilled(im(c.box.min), im(c.box.max), IM_COL32(255, 255, 255, 230), 4.0f);
-    dl->AddRect(im(c.box.min), im(c.box.max), IM_COL32(0, 0, 0, 40), 4.0f);
-    glm::dvec2 at = c.box.min + glm::dvec2(8, 5);
-    dl->AddText(f.ui, f.ui->FontSize, im(at), im_colour(kCaptionText), c.title.c_str());
-    at.y += f.ui->FontSize + 2;
-    dl->AddText(f.small, f.small->FontSize, im(at), im_colour(kTickLabel), c.detail.c_str());
-    at.y += f.small->FontSize + 2;
-    if (!c.hint.empty())
-        dl->AddText(f.small, f.small->FontSize, im(at), im_colour(kHintText), c.hint.c_str());
+// --- [views] ---------------------------------------------------------------------------------
+
+// Room kept at the bottom of the main view for the sliders drawn over it.
+double sliders_height(const Session& s) {
+    return s.algorithm ? (ImGui::GetFrameHeight() + 4) * double(s.algorithm->spec->sliders.size())
+                       : 0;
 }
 
-}  // namespace
-
-// --- [draw_canvas] ---------------------------------------------------------------------------
-
-namespace {
-
-// The 2D canvas in `box`; returns the caption's box so the 3D canvas can keep clear of it.
-void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_caption) {
+// The 2D world in `box`.
+ScreenMap draw_world(Session& s, const Box& box, bool interactive, Recording rec,
+                     const std::vector<Box>& keep_clear) {
+    const glm::dvec2 size = box.max - box.min;
+    if (s.canvas.fit_pending || s.canvas.fitted_world != size) {
+        const double sliders = sliders_height(s);
+        s.canvas.view = fit_view(s.scene(), glm::max(size - glm::dvec2(0, sliders), glm::dvec2(1)));
+        s.canvas.view.center.y -= sliders / 2 / s.canvas.view.zoom;
+        s.canvas.fitted_world = size;
+    }
     const Scene* scene = &s.scene();
     ScreenMap map{box, s.canvas.view};
     int hot = -1;
@@ -239,45 +263,47 @@ void draw_canvas2d(Session& s, const Box& box, bool interactive, bool with_capti
             const Box spot{at - glm::dvec2(4), at + glm::dvec2(4)};
             s.widgets["handle:" + h.name] = {spot, map.canvas, map.canvas.contains(at)};
         }
-
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->PushClipRect(im(map.canvas.min), im(map.canvas.max), true);
+    dl->PushClipRect(im(box.min), im(box.max), true);
     // No background of its own: the frame is cleared to the canvas's colour (kCanvasBackground)
     // before ImGui draws, and a software rasteriser pays for every pixel filled twice.
     draw_grid(dl, map, s.fonts);
-    Caption caption;
-    if (with_caption) caption = make_caption(map, s, interactive);
-    draw_scene(dl, map, *scene, s.fonts, hot, {caption.box.grown(4)}, s.textures);
-    if (with_caption) draw_caption(dl, caption, s.fonts);
+    const Box drawn = draw_scene(dl, map, *scene, s.fonts, hot, keep_clear, s.textures, rec);
+    if (rec.record) rec.record->panels[rec.panel].content = drawn;
     dl->PopClipRect();
+    return map;
 }
 
-void draw_canvas3d(Session& s, const Box& box, bool interactive) {
+// The 3D view in `box`.
+Projector draw_view3(Session& s, const Box& box, bool interactive, Recording rec,
+                     const std::vector<Box>& keep_clear) {
     Camera3& camera = s.canvas.camera3;
-    if (interactive && interact3(camera, box)) camera.view = fit_view3(s.scene(), box.max - box.min);
-    const Scene& scene = s.scene();
+    const glm::dvec2 size = box.max - box.min;
+    if (s.canvas.fit_pending || s.canvas.fitted_3d != size) {
+        camera.view = fit_view3(s.scene(), size);
+        s.canvas.fitted_3d = size;
+    }
+    if (interactive && interact3(camera, box)) camera.view = fit_view3(s.scene(), size);
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(im(box.min), im(box.max), true);
     // (The background is the frame's clear colour, as for the 2D canvas.)
-    ScreenMap map{box, s.canvas.view};
-    Caption caption = make_caption(map, s, false);
-    if (interactive && box.max.x - box.min.x >= 560)
-        caption.hint = "drag: orbit (arcball)  ·  right-drag: pan  ·  wheel: zoom  ·  double-click: reset";
-    caption = make_caption_box(caption, map, s.fonts);
-    draw_scene3(dl, Projector{box, camera.view}, scene, s.fonts, {caption.box.grown(4)});
-    draw_caption(dl, caption, s.fonts);
+    const Projector proj{box, camera.view};
+    draw_scene3(dl, proj, s.scene(), s.fonts, keep_clear, rec);
+    if (rec.record) rec.record->panels[rec.panel].content = box;
     dl->PopClipRect();
+    return proj;
 }
 
-// The algorithm's sliders (Spec::sliders) over the canvas's bottom-left corner: dragging one
-// edits that number in the input and re-runs at the same step, so the construction follows
+// The algorithm's sliders (Spec::sliders) over the main view's bottom-left corner: dragging
+// one edits that number in the input and re-runs at the same step, so the construction follows
 // the slider. Hidden while an exam's solution is.
 void draw_sliders(Session& s, const Box& area) {
     if (!s.algorithm || s.solution_hidden()) return;
     const float row = ImGui::GetFrameHeight() + 4;
     const float width = static_cast<float>(std::min(380.0, area.max.x - area.min.x - 40));
     if (width < 80) return;
-    float y = static_cast<float>(area.max.y) - 12 - row * static_cast<float>(s.algorithm->spec->sliders.size());
+    float y = static_cast<float>(area.max.y) - 12 -
+              row * static_cast<float>(s.algorithm->spec->sliders.size());
     for (const Slider& slider : s.algorithm->spec->sliders) {
         const json::json_pointer pointer(slider.field);
         if (!s.input.contains(pointer) || !s.input.at(pointer).is_number()) continue;
@@ -292,9 +318,9 @@ void draw_sliders(Session& s, const Box& area) {
         ImGui::SetNextItemWidth(width);
         ImGui::PushStyleColor(ImGuiCol_FrameBg, im_vec4(kNoteBackground));
         const std::string format = slider.label + " = %.3f";
-        const bool changed = ImGui::SliderScalar(("##slider" + slider.field).c_str(),
-                                                 ImGuiDataType_Double, &v, &slider.min,
-                                                 &slider.max, format.c_str());
+        const bool changed =
+            ImGui::SliderScalar(("##slider" + slider.field).c_str(), ImGuiDataType_Double, &v,
+                                &slider.min, &slider.max, format.c_str());
         ImGui::PopStyleColor();
         if (changed) {
             // Four significant digits: the input reads 0.35, not 0.35000000000000003.
@@ -308,42 +334,98 @@ void draw_sliders(Session& s, const Box& area) {
     }
 }
 
+// Where the sliders will be, for the labels to keep clear of.
+Box sliders_box(const Session& s, const Box& area) {
+    const double h = sliders_height(s);
+    if (h == 0 || s.solution_hidden()) return {{0, 0}, {0, 0}};
+    return {{area.min.x + 6, area.max.y - 12 - h - 4},
+            {area.min.x + 18 + std::min(380.0, area.max.x - area.min.x - 40), area.max.y - 6}};
+}
+
 }  // namespace
+
+// --- [draw_canvas] ---------------------------------------------------------------------------
 
 void draw_canvas(Session& s, bool interactive) {
     const glm::dvec2 origin = dv(ImGui::GetCursorScreenPos());
     const glm::dvec2 size = glm::max(dv(ImGui::GetContentRegionAvail()), glm::dvec2(1, 1));
-    const Scene& scene = s.scene();
-    // A scene with 3D content gets the 3D canvas; with 2D content as well (a plot, the
-    // viewport's disc), the two side by side: 3D on the left, 2D on the right.
-    const bool three = scene.has_3d(), two = !three || scene.has_2d();
-    Box box2{origin, origin + size}, box3 = box2;
-    if (three && two) {
-        const double split = std::round(size.x * 0.58);
-        box3.max.x = origin.x + split;
-        box2.min.x = origin.x + split + 2;
-    }
-    if (s.canvas.fit_pending && size.x > 16 && size.y > 16) {
-        if (two) {
-            // Room at the bottom for the sliders drawn over the canvas.
-            const double sliders =
-                s.algorithm ? (ImGui::GetFrameHeight() + 4) * s.algorithm->spec->sliders.size() : 0;
-            const glm::dvec2 room = box2.max - box2.min - glm::dvec2(0, sliders);
-            s.canvas.view = fit_view(scene, glm::max(room, glm::dvec2(1, 1)));
-            s.canvas.view.center.y -= sliders / 2 / s.canvas.view.zoom;
-        }
-        if (three) s.canvas.camera3.view = fit_view3(scene, box3.max - box3.min);
-        s.canvas.fit_pending = false;
-    }
-    if (three) draw_canvas3d(s, box3, interactive);
-    if (two) draw_canvas2d(s, box2, interactive, !three);
-    draw_sliders(s, two ? box2 : box3);
+    const Box canvas{origin, origin + size};
+    LayoutRecord* record = s.layout_record;
+    s.layout_record = nullptr;  // one frame's
+    if (record) *record = LayoutRecord{}, record->canvas = canvas;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
     if (!s.timeline) {
-        ImDrawList* dl = ImGui::GetWindowDrawList();
         const char* text = "Nothing to show: the input was refused (see the Input panel).";
         const glm::dvec2 at = (origin + size * 0.5) - glm::dvec2(200, 10);
         dl->AddText(s.fonts.ui, s.fonts.ui->FontSize, im(at), im_colour(kErrorText), text);
+        return;
     }
+    const Scene& scene = s.scene();
+    Box area = canvas;
+    const std::vector<ViewSlot> first = layout_views(scene, area);
+    const bool three = scene.has_3d();
+    const bool world = std::any_of(first.begin(), first.end(),
+                                   [](const ViewSlot& v) { return v.kind == ViewKind::World2d; });
+    area.min.y += draw_title(dl, canvas, make_title(s, interactive, three, world), s.fonts, record);
+    const std::vector<ViewSlot> views = layout_views(scene, area);
+    if (record)
+        for (const ViewSlot& v : views) record->panels.push_back({v.kind, v.box, v.box});
+
+    // The main view holds the sliders; labels keep clear of them.
+    const Box main = views.empty() ? area : views.front().box;
+    const std::vector<Box> keep_clear{sliders_box(s, main)};
+    std::optional<ScreenMap> world_map;
+    std::optional<Projector> proj;
+    std::vector<ScreenMap> panel_maps(scene.panels.size());
+    std::size_t texture_slot = scene.grids.size();  // the world's grids come first
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        const ViewSlot& v = views[i];
+        const Recording rec{record, static_cast<int>(i)};
+        const std::vector<Box> clear =
+            v.box.overlaps(keep_clear.front()) ? keep_clear : std::vector<Box>{};
+        switch (v.kind) {
+            case ViewKind::World2d:
+                world_map = draw_world(s, v.box, interactive, rec, clear);
+                break;
+            case ViewKind::View3d:
+                proj = draw_view3(s, v.box, interactive, rec, clear);
+                break;
+            case ViewKind::Chart:
+            case ViewKind::Image: {
+                const Panel& p = scene.panels[v.panel];
+                panel_maps[v.panel] =
+                    draw_panel(dl, v.box, p, s.fonts, s.textures, texture_slot, rec);
+                texture_slot += p.grids.size();
+                break;
+            }
+        }
+    }
+    s.canvas.fit_pending = false;
+    if (record) {
+        // The focus elements where they landed on screen.
+        auto index_of = [&](ViewKind kind, int panel) {
+            for (std::size_t i = 0; i < views.size(); ++i)
+                if (views[i].kind == kind && views[i].panel == panel) return static_cast<int>(i);
+            return -1;
+        };
+        for (const Focus2& f : scene.focus2) {
+            const bool in_world = f.panel < 0;
+            if (in_world && !world_map) continue;
+            if (!in_world && f.panel >= static_cast<int>(scene.panels.size())) continue;
+            const ScreenMap& map = in_world ? *world_map : panel_maps[f.panel];
+            const glm::dvec2 a = map.to_screen(f.lo), b = map.to_screen(f.hi);
+            const int at = in_world ? index_of(ViewKind::World2d, -1)
+                                    : index_of(scene.panels[f.panel].kind == PanelKind::Image
+                                                   ? ViewKind::Image
+                                                   : ViewKind::Chart,
+                                               f.panel);
+            record->focus.push_back({{glm::min(a, b), glm::max(a, b)}, at});
+        }
+        if (proj)
+            for (const Focus3& f : scene.focus3)
+                record->focus.push_back({screen_bounds(*proj, f), index_of(ViewKind::View3d, -1)});
+    }
+    draw_sliders(s, main);
 }
 
 }  // namespace cg::viewer

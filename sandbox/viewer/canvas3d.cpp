@@ -27,7 +27,7 @@ double Projector::focal() const {
 }
 
 glm::dvec2 Projector::project_view(glm::dvec3 v) const {
-    const double f = focal() / depth(v);
+    const double f = focal() / (view.orthographic ? view.distance : depth(v));
     const glm::dvec2 c = centre();
     return {c.x + f * v.x, c.y - f * v.y};
 }
@@ -43,6 +43,18 @@ glm::dquat default_rotation() {
     // tip it 20° about x so that we look down on the floor a little.
     return glm::angleAxis(glm::radians(20.0), glm::dvec3(1, 0, 0)) *
            glm::angleAxis(glm::radians(-35.0), glm::dvec3(0, 1, 0));
+}
+
+glm::dquat look_rotation(glm::dvec3 look, glm::dvec3 up) {
+    const double l = glm::length(look);
+    if (!(l > 0) || !std::isfinite(l)) return default_rotation();
+    const glm::dvec3 f = look / l;
+    glm::dvec3 r = glm::cross(f, up);
+    if (glm::length(r) < 1e-9) return default_rotation();
+    r = glm::normalize(r);
+    const glm::dvec3 u = glm::cross(r, f);
+    // The view's axes are r (right), u (up) and −f (toward the viewer): the rows of world → view.
+    return glm::normalize(glm::quat_cast(glm::transpose(glm::dmat3(r, u, -f))));
 }
 
 // --- [fitting] -------------------------------------------------------------------------------
@@ -71,29 +83,47 @@ bool finite(glm::dvec3 p) {
 
 View3 fit_view3(const Scene& scene, glm::dvec2 size) {
     View3 v;
-    v.rotation = default_rotation();
-    double radius = 0;
-    if (scene.extent3 > 0 && std::isfinite(scene.extent3)) {
-        radius = scene.extent3;
+    v.rotation = scene.view3.look == glm::dvec3(0)
+                     ? default_rotation()
+                     : look_rotation(scene.view3.look, scene.view3.up);
+    v.orthographic = scene.view3.orthographic;
+    // What to frame: the focus elements when the step marks some; else the sphere of radius
+    // extent3 round the origin when the scene gives one; else everything.
+    const double inf = std::numeric_limits<double>::infinity();
+    glm::dvec3 lo(inf), hi(-inf);
+    auto add = [&](glm::dvec3 p) {
+        if (!finite(p)) return;
+        lo = glm::min(lo, p), hi = glm::max(hi, p);
+    };
+    if (!scene.focus3.empty()) {
+        for (const Focus3& f : scene.focus3) add(f.lo), add(f.hi);
+    } else if (scene.extent3 > 0 && std::isfinite(scene.extent3)) {
+        add(glm::dvec3(-scene.extent3)), add(glm::dvec3(scene.extent3));
     } else {
-        const double inf = std::numeric_limits<double>::infinity();
-        glm::dvec3 lo(inf), hi(-inf);
-        for_each_point(scene, [&](glm::dvec3 p) {
-            if (!finite(p)) return;
-            lo = glm::min(lo, p), hi = glm::max(hi, p);
-        });
-        if (lo.x <= hi.x) {
-            v.target = (lo + hi) / 2.0;
-            radius = glm::length(hi - lo) / 2;
-        }
+        for_each_point(scene, add);
     }
-    if (!(radius > 0)) radius = 1;
-    // The bounding sphere fills the narrower of the two fields of view, with a margin for
-    // labels and the caption.
-    const double aspect = std::max(size.x, 1.0) / std::max(size.y, 1.0);
-    const double half_y = glm::radians(v.fov_y_deg) / 2;
-    const double half = std::min(half_y, std::atan(std::tan(half_y) * aspect));
-    v.distance = 1.15 * radius / std::sin(half);
+    if (!(lo.x <= hi.x)) lo = glm::dvec3(-1), hi = glm::dvec3(1);
+    v.target = (lo + hi) / 2.0;
+    // The box's corners in view coordinates round the target must fit in 80% of the canvas's
+    // half-width and half-height (room for labels): for a pinhole at distance d, a corner c
+    // lands f·c.x / (d − c.z) from the centre, so d ≥ c.z + f·|c.x| / half_width.
+    const double focal = std::max(size.y, 1.0) / 2 / std::tan(glm::radians(v.fov_y_deg) / 2);
+    const double hw = 0.80 * std::max(size.x, 1.0) / 2, hh = 0.80 * std::max(size.y, 1.0) / 2;
+    double distance = 0, deepest = -inf;
+    glm::dvec3 half = (hi - lo) / 2.0;
+    if (glm::length(half) < 1e-9) half = glm::dvec3(0.5);
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec3 corner(i & 1 ? half.x : -half.x, i & 2 ? half.y : -half.y,
+                                i & 4 ? half.z : -half.z);
+        const glm::dvec3 c = v.rotation * corner;
+        const double z = v.orthographic ? 0 : c.z;
+        distance =
+            std::max({distance, z + focal * std::fabs(c.x) / hw, z + focal * std::fabs(c.y) / hh});
+        deepest = std::max(deepest, c.z);
+    }
+    // In perspective the camera stays outside the box, with room before the near plane.
+    if (!v.orthographic) distance = std::max(distance, 1.3 * deepest);
+    v.distance = distance > 0 && std::isfinite(distance) ? distance : 10;
     return v;
 }
 
@@ -171,13 +201,6 @@ struct Item {
     enum Kind : std::uint8_t { kLine, kFill, kDot } kind;
     int index;
 };
-struct PendingLabel {
-    int priority;
-    std::string text;
-    std::uint32_t rgba;
-    glm::dvec2 anchor;
-    double gap;
-};
 
 // A mesh edge by its two world-space ends, either way round: a segment drawn along a face's
 // edge (an outline, a silhouette, a crease) is found by it.
@@ -203,7 +226,7 @@ struct Collector {
     std::vector<Fill> fills;
     std::vector<Dot> dots;
     std::vector<Item> items;
-    std::vector<PendingLabel> labels;
+    std::vector<LabelRequest> labels;
     // The nearest depth of the faces along each face edge. A segment lying on a face's edge
     // has the face's depth at best (its midpoint's against the face's centroid: either can be
     // the nearer), so by depth alone the face would paint over it about half the time; a
@@ -220,13 +243,24 @@ struct Collector {
     }
 
     void line(glm::dvec3 wa, glm::dvec3 wb, std::uint32_t rgba, float width, bool dashed,
-              bool arrow, const std::string& label = {}) {
+              bool arrow, const std::string& label = {}, int priority = 0, float min_pixels = 0) {
         glm::dvec3 a = proj.to_view(wa), b = proj.to_view(wb);
         if (!finite(a) || !finite(b)) return;
         const glm::dvec3 b_before = b;
         if (!clip_near(a, b)) return;
         arrow = arrow && b == b_before;  // no head on a cut end
-        lines.push_back({proj.project_view(a), proj.project_view(b), rgba, width, dashed, arrow});
+        glm::dvec2 sa = proj.project_view(a), sb = proj.project_view(b);
+        if (min_pixels > 0 && b == b_before) {
+            // Too short to see from here: lengthened on screen along its own direction (or,
+            // seen end-on, along the view's projection of its 3D direction).
+            const double length = glm::length(sb - sa);
+            if (length < min_pixels) {
+                glm::dvec2 dir = sb - sa;
+                if (length < 1e-6) dir = glm::dvec2(b.x - a.x, -(b.y - a.y));
+                if (glm::length(dir) > 1e-12) sb = sa + glm::normalize(dir) * double(min_pixels);
+            }
+        }
+        lines.push_back({sa, sb, rgba, width, dashed, arrow});
         double depth = (proj.depth(a) + proj.depth(b)) / 2;
         if (!face_edges.empty()) {
             if (auto e = face_edges.find(EdgeKey(wa, wb)); e != face_edges.end())
@@ -235,7 +269,7 @@ struct Collector {
         items.push_back({depth, Item::kLine, static_cast<int>(lines.size() - 1)});
         if (!label.empty())
             labels.push_back(
-                {2, label, darker(rgba | 0xffu, 0.8f), (lines.back().a + lines.back().b) / 2.0, 8});
+                {label, darker(rgba | 0xffu, 0.8f), priority, arrow ? sb : (sa + sb) / 2.0, 8});
     }
 
     void face(const Face3& f) {
@@ -270,18 +304,20 @@ struct Collector {
         }
     }
 
-    void dot(glm::dvec3 w, std::uint32_t rgba, float radius, const std::string& label) {
+    void dot(glm::dvec3 w, std::uint32_t rgba, float radius, const std::string& label,
+             int priority) {
         const glm::dvec3 v = proj.to_view(w);
         if (!finite(v) || proj.depth(v) < proj.near()) return;
         dots.push_back({proj.project_view(v), rgba, std::clamp(radius, 1.0f, 30.0f)});
         items.push_back({proj.depth(v), Item::kDot, static_cast<int>(dots.size() - 1)});
         if (!label.empty())
-            labels.push_back({0, label, darker(rgba, 0.8f), dots.back().c, dots.back().radius + 5});
+            labels.push_back(
+                {label, darker(rgba, 0.8f), priority, dots.back().c, dots.back().radius + 5});
     }
 
     void text(glm::dvec3 w, const std::string& t, std::uint32_t rgba, int priority) {
         if (t.empty()) return;
-        if (auto s = proj.screen(w)) labels.push_back({priority, t, darker(rgba, 0.8f), *s, 6});
+        if (auto s = proj.screen(w)) labels.push_back({t, darker(rgba, 0.8f), priority, *s, 6});
     }
 
     void frame(const Frame3& f) {
@@ -293,12 +329,13 @@ struct Collector {
         for (int i = 0; i < 3; ++i) {
             const glm::dvec3 tip = f.origin + axes[i] * f.length;
             line(f.origin, tip, with_alpha(colours[i], alpha), 2.5f, false, true);
-            text(tip, f.name.empty() ? names[i] : f.name + names[i], colours[i], 1);
+            text(tip, f.name.empty() ? names[i] : f.name + names[i], colours[i], 5);
         }
     }
 
-    // The floor y = 0 as a faint grid round the target, and the world axes through the origin.
-    void floor_and_axes(double radius) {
+    // The floor y = 0 as a faint grid round the target, and the world axes through the origin
+    // (not when the scene draws a frame of its own there: its letters would be doubled).
+    void floor_and_axes(double radius, bool axes_too) {
         const double step = nice_step(radius / 4);
         const int n = 4;
         const double cx = std::round(proj.view.target.x / step) * step;
@@ -310,13 +347,14 @@ struct Collector {
             line({cx - n * step, 0, cz + o}, {cx + n * step, 0, cz + o}, kFloor, 1.0f, false,
                  false);
         }
+        if (!axes_too) return;
         const double length = 2 * step;
         const glm::dvec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
         const std::uint32_t colours[3] = {kAxisX, kAxisY, kAxisZ};
         const char* names[3] = {"x", "y", "z"};
         for (int i = 0; i < 3; ++i) {
             line({0, 0, 0}, axes[i] * length, with_alpha(colours[i], 0x90), 1.5f, false, true);
-            text(axes[i] * length, names[i], colours[i], 3);
+            text(axes[i] * length, names[i], colours[i], 0);
         }
     }
 };
@@ -373,18 +411,24 @@ void paint_dot(ImDrawList* dl, const Dot& d) {
 // --- [draw_scene3] ---------------------------------------------------------------------------
 
 void draw_scene3(ImDrawList* dl, const Projector& proj, const Scene& scene, const Fonts& fonts,
-                 const std::vector<Box>& keep_clear) {
+                 const std::vector<Box>& keep_clear, Recording recording) {
     Collector c{proj, {}, {}, {}, {}, {}, {}};
     const double radius = proj.view.distance * std::sin(glm::radians(proj.view.fov_y_deg) / 2);
-    c.floor_and_axes(radius);
+    const bool own_origin_frame =
+        std::any_of(scene.frames3.begin(), scene.frames3.end(),
+                    [](const Frame3& f) { return f.name.empty() && f.origin == glm::dvec3(0); });
+    c.floor_and_axes(radius, !own_origin_frame);
     const std::size_t first_scene_item = c.items.size();
     for (const Face3& f : scene.faces3) c.face(f);
     for (const Segment3& s : scene.segments3)
         c.line(s.a, s.b, style_rgba(s.style), std::clamp(s.style.width, 0.5f, 20.0f),
-               s.style.dashed, s.arrow, s.label);
+               s.style.dashed, s.arrow, s.label, label_priority(s.priority, s.style, 1),
+               s.min_pixels);
     for (const Frame3& f : scene.frames3) c.frame(f);
-    for (const Point3& p : scene.points3) c.dot(p.p, style_rgba(p.style), p.radius, p.label);
-    for (const Label3& l : scene.labels3) c.text(l.p, l.text, style_rgba(l.style), 1);
+    for (const Point3& p : scene.points3)
+        c.dot(p.p, style_rgba(p.style), p.radius, p.label, label_priority(p.priority, p.style, 3));
+    for (const Label3& l : scene.labels3)
+        c.text(l.p, l.text, style_rgba(l.style), label_priority(l.priority, l.style, 2));
 
     // The floor and axes always lie under the scene; the scene's own items back to front.
     std::stable_sort(c.items.begin() + static_cast<std::ptrdiff_t>(first_scene_item), c.items.end(),
@@ -411,19 +455,20 @@ void draw_scene3(ImDrawList* dl, const Projector& proj, const Scene& scene, cons
             }
         }
     }
+    const std::vector<PlacedLabel> placed = placer.place_all(
+        std::move(c.labels), [&](const std::string& t) { return label_size(fonts, t); });
+    paint_labels(dl, placed, placer, fonts, recording.record, recording.panel);
+}
 
-    std::stable_sort(
-        c.labels.begin(), c.labels.end(),
-        [](const PendingLabel& a, const PendingLabel& b) { return a.priority < b.priority; });
-    const float size = fonts.ui->FontSize;
-    for (const PendingLabel& l : c.labels) {
-        const ImVec2 t = fonts.ui->CalcTextSizeA(size, FLT_MAX, 0, l.text.c_str());
-        const glm::dvec2 box_size{t.x + 6, t.y + 2};
-        const Box box = placer.place(box_size, LabelPlacer::around(l.anchor, box_size, l.gap));
-        dl->AddRectFilled(im(box.min), im(box.max), im_colour(kLabelHalo), 3.0f);
-        dl->AddText(fonts.ui, size, im(box.min + glm::dvec2(3, 1)), im_colour(l.rgba),
-                    l.text.c_str());
+Box screen_bounds(const Projector& proj, const Focus3& f) {
+    Box b{{DBL_MAX, DBL_MAX}, {-DBL_MAX, -DBL_MAX}};
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec3 p(i & 1 ? f.hi.x : f.lo.x, i & 2 ? f.hi.y : f.lo.y,
+                           i & 4 ? f.hi.z : f.lo.z);
+        if (auto s = proj.screen(p)) b.min = glm::min(b.min, *s), b.max = glm::max(b.max, *s);
     }
+    if (b.min.x > b.max.x) return {{0, 0}, {0, 0}};
+    return b;
 }
 
 }  // namespace cg::viewer

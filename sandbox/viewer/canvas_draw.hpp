@@ -16,19 +16,23 @@
 namespace cg::viewer {
 
 // World coordinates are y up; the screen's are y down. The view's centre is at the canvas's
-// centre, and `zoom` is pixels per world unit.
+// centre, and `zoom` is pixels per world unit along x; along y it is zoom × y_scale (1 in the
+// world and in an image; a chart's axes are scaled apart).
 struct ScreenMap {
     Box canvas;  // in screen pixels
     View2 view;
+    double y_scale = 1;
 
     glm::dvec2 centre() const { return (canvas.min + canvas.max) * 0.5; }
     glm::dvec2 to_screen(glm::dvec2 w) const {
         const glm::dvec2 c = centre();
-        return {c.x + (w.x - view.center.x) * view.zoom, c.y - (w.y - view.center.y) * view.zoom};
+        return {c.x + (w.x - view.center.x) * view.zoom,
+                c.y - (w.y - view.center.y) * view.zoom * y_scale};
     }
     glm::dvec2 to_world(glm::dvec2 s) const {
         const glm::dvec2 c = centre();
-        return {view.center.x + (s.x - c.x) / view.zoom, view.center.y - (s.y - c.y) / view.zoom};
+        return {view.center.x + (s.x - c.x) / view.zoom,
+                view.center.y - (s.y - c.y) / (view.zoom * y_scale)};
     }
 };
 
@@ -43,21 +47,40 @@ inline glm::dvec2 dv(ImVec2 p) {
 // drag snapping read as round numbers.
 double nice_step(double at_least);
 
-// A view showing all of the scene's bounded geometry (half-planes are infinite and don't
-// count) in a canvas of `size` pixels, with room for labels and the caption.
-View2 fit_view(const Scene& scene, glm::dvec2 size);
+// The bounds of the layer's bounded geometry (half-planes are infinite and don't count);
+// lo > hi when there is none.
+Box bounds_of(const Layer2& layer);
+
+// A view showing all of the layer's bounded geometry in a canvas of `size` pixels, with room
+// (`margin` pixels a side) for labels.
+View2 fit_view(const Layer2& layer, glm::dvec2 size, double margin = 40);
 
 // Grid lines every round step (at least ~70 px apart, with lighter subdivisions), the axes,
 // and tick labels kept inside the canvas when an axis is out of view.
 void draw_grid(ImDrawList* dl, const ScreenMap& map, const Fonts& fonts);
 
-// The scene, bottom to top: half-planes, polygons, segments, points, handles, then all
-// labels, placed to avoid each other, the geometry and the `keep_clear` boxes (the caption).
-// `hot_handle` is the handle hovered or dragged, or -1. `textures`, if given, draws big pixel
-// grids as textures (viewer/grid_texture.hpp).
+// What a drawing pass reports about itself, when asked: the layout record (layout.hpp) and the
+// index its current view has there.
+struct LayoutRecord;
+struct Recording {
+    LayoutRecord* record = nullptr;
+    int panel = 0;
+};
+
+// The layer, bottom to top: pixel grids, half-planes, polygons, segments, points, handles,
+// then all labels, placed to avoid each other, the geometry and the `keep_clear` boxes (the
+// sliders, a legend). `hot_handle` is the handle hovered or dragged, or -1. `textures`, if
+// given, draws big pixel grids as textures (viewer/grid_texture.hpp). Returns the screen bounds
+// of what was drawn (clipped to the canvas).
 class GridTextures;
-void draw_scene(ImDrawList* dl, const ScreenMap& map, const Scene& scene, const Fonts& fonts,
-                int hot_handle, const std::vector<Box>& keep_clear,
-                GridTextures* textures = nullptr);
+Box draw_scene(ImDrawList* dl, const ScreenMap& map, const Layer2& layer, const Fonts& fonts,
+               int hot_handle, const std::vector<Box>& keep_clear, GridTextures* textures = nullptr,
+               Recording recording = {}, std::size_t first_texture_slot = 0);
+
+// A chart or an image panel of the scene in `box`: its title above, then a chart's axes and
+// ticks in its own units, its series and legend; or an image filling the rest, pixel-exact.
+// Returns the map from the panel's coordinates to the screen (for its focus elements).
+ScreenMap draw_panel(ImDrawList* dl, const Box& box, const Panel& panel, const Fonts& fonts,
+                     GridTextures* textures, std::size_t texture_slot, Recording recording);
 
 }  // namespace cg::viewer

@@ -77,6 +77,11 @@ GuiHost::GuiHost(const char* title, int width, int height, Mode mode) {
         // `render` is a command-line tool: Ctrl-C should end it, not become an SDL event.
         if (mode == Mode::Offscreen) SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
         choose_video_driver(mode);
+        // A click that arrives with the focus (within 10 ms of it, as SDL measures when it
+        // handles the events, so a slow frame squeezes them together) is dropped by SDL's X11
+        // driver unless this is set: the first click on a freshly shown viewer was lost under
+        // load. A student's click always means what it says.
+        SDL_SetHint(SDL_HINT_MOUSE_FOCUS_CLICKTHROUGH, "1");
         if (SDL_Init(SDL_INIT_VIDEO) != 0) throw NoDisplay(SDL_GetError());
         sdl_ = true;
         if (mode == Mode::Window && !has_env("SDL_VIDEODRIVER") && invisible_driver())

@@ -32,14 +32,6 @@ Pen pen_of(const Style& style) {
     return {im_colour(style_rgba(style)), std::clamp(style.width, 0.5f, 20.0f), style.dashed};
 }
 
-// A label waiting for a place: drawn last, over all geometry.
-struct PendingLabel {
-    int priority;  // lower is placed first and so gets the better spot
-    std::string text;
-    std::uint32_t rgba;
-    std::vector<glm::dvec2> corners;  // candidate top-left corners, best first
-};
-
 // Everything draw_scene's parts share.
 struct Painter {
     ImDrawList* dl;
@@ -47,13 +39,19 @@ struct Painter {
     const Fonts& fonts;
     Box safe;
     LabelPlacer placer;
-    std::vector<PendingLabel> labels;
+    std::vector<LabelRequest> labels;
     GridTextures* textures = nullptr;  // big grids as one texture, when there is a GL context
-    std::size_t grids = 0;             // grids drawn so far (each its own texture)
+    std::size_t grids = 0;             // grid texture slots used so far (each its own texture)
+    Box drawn{{DBL_MAX, DBL_MAX}, {-DBL_MAX, -DBL_MAX}};  // the screen bounds of what was drawn
 
-    glm::dvec2 text_size(const std::string& text) const {
-        const ImVec2 s = fonts.ui->CalcTextSizeA(fonts.ui->FontSize, FLT_MAX, 0, text.c_str());
-        return {s.x + 6, s.y + 2};  // with the halo's padding
+    glm::dvec2 text_size(const std::string& text) const { return label_size(fonts, text); }
+    void note(glm::dvec2 q) {
+        if (!map.canvas.contains(q)) q = glm::clamp(q, map.canvas.min, map.canvas.max);
+        drawn.min = glm::min(drawn.min, q);
+        drawn.max = glm::max(drawn.max, q);
+    }
+    void note(const std::vector<glm::dvec2>& qs) {
+        for (glm::dvec2 q : qs) note(q);
     }
 };
 
@@ -126,7 +124,7 @@ std::vector<glm::dvec2> to_screen(const ScreenMap& map, const std::vector<glm::d
 
 // --- [pixel grids] ---------------------------------------------------------------------------
 
-constexpr std::uint32_t kRoleCellAlpha = 0xa0;    // cells in the grid's role colour
+constexpr std::uint32_t kRoleCellAlpha = 0xa0;     // cells in the grid's role colour
 constexpr std::uint32_t kCellBorder = 0x00000030;  // over white and over colour alike
 constexpr std::uint32_t kEmptyCentre = 0x9a9a9aff;
 constexpr std::uint32_t kFilledCentre = 0x00000080;
@@ -184,6 +182,8 @@ void draw_pixel_grid(Painter& p, const PixelGrid2& g) {
     const int i0 = cells(std::floor(lo.x), g.width), i1 = cells(std::ceil(hi.x), g.width);
     const int j0 = cells(std::floor(lo.y), g.height), j1 = cells(std::ceil(hi.y), g.height);
     if (i0 >= i1 || j0 >= j1) return;
+    p.note(p.map.to_screen(g.origin + glm::dvec2(i0, j0)));
+    p.note(p.map.to_screen(g.origin + glm::dvec2(i1, j1)));
 
     const double size = p.map.view.zoom;  // screen pixels per cell
     const ImU32 role = im_colour(with_alpha(role_rgba(g.role), kRoleCellAlpha));
@@ -208,10 +208,8 @@ void draw_pixel_grid(Painter& p, const PixelGrid2& g) {
         return glm::clamp(s, p.safe.min, p.safe.max);
     };
     const ImU32 border = im_colour(kCellBorder);
-    for (int i = i0; i <= i1; ++i)
-        p.dl->AddLine(im(corner(i, j0)), im(corner(i, j1)), border);
-    for (int j = j0; j <= j1; ++j)
-        p.dl->AddLine(im(corner(i0, j)), im(corner(i1, j)), border);
+    for (int i = i0; i <= i1; ++i) p.dl->AddLine(im(corner(i, j0)), im(corner(i, j1)), border);
+    for (int j = j0; j <= j1; ++j) p.dl->AddLine(im(corner(i0, j)), im(corner(i1, j)), border);
     if (size < kCentrePixels) return;
     const float radius = static_cast<float>(std::clamp(size * 0.06, 1.5, 3.0));
     for (int j = j0; j < j1; ++j)
@@ -250,7 +248,7 @@ void draw_half_plane(Painter& p, const HalfPlane2& h) {
     const glm::dvec2 from = a_first ? a : b, to = a_first ? b : a;
     glm::dvec2 out = glm::normalize(glm::dvec2(-h.inward.x, h.inward.y));  // screen is y down
     const glm::dvec2 size = p.text_size(h.label);
-    PendingLabel label{3, h.label, darker(rgba, 0.8f), {}};
+    LabelRequest label{h.label, darker(rgba, 0.8f), label_priority(0, h.style, 0), from, 6};
     for (double side : {1.0, -1.0}) {
         const glm::dvec2 n = out * side;
         const double reach = 6 + std::abs(n.x) * size.x / 2 + std::abs(n.y) * size.y / 2;
@@ -272,6 +270,7 @@ void draw_polygon(Painter& p, const Polygon2& poly) {
                            ? rgba
                            : with_alpha(rgba, kFillAlpha)));
     stroke(p, screen, poly.closed, pen_of(poly.style));
+    p.note(screen);
     const std::size_t edges = poly.closed ? screen.size() : screen.size() - 1;
     for (std::size_t i = 0; i < edges && screen.size() > 1; ++i)
         p.placer.avoid_segment(screen[i], screen[(i + 1) % screen.size()]);
@@ -293,11 +292,10 @@ void draw_segment(Painter& p, const Segment2& s) {
         stroke(p, {a, b}, false, pen);
     }
     p.placer.avoid_segment(a, b);
-    if (!s.label.empty()) {
-        const glm::dvec2 mid = (a + b) / 2.0;
-        p.labels.push_back({2, s.label, darker(style_rgba(s.style), 0.8f),
-                            LabelPlacer::around(mid, p.text_size(s.label), 8)});
-    }
+    p.note(a), p.note(b);
+    if (!s.label.empty())
+        p.labels.push_back({s.label, darker(style_rgba(s.style), 0.8f),
+                            label_priority(s.priority, s.style, 1), (a + b) / 2.0, 8});
 }
 
 void draw_point(Painter& p, const Point2& pt) {
@@ -308,9 +306,10 @@ void draw_point(Painter& p, const Point2& pt) {
     p.dl->AddCircleFilled(im(c), r + 1.5f, IM_COL32_WHITE);  // the outline keeps it off lines
     p.dl->AddCircleFilled(im(c), r, im_colour(rgba));
     p.placer.avoid_box({c - glm::dvec2(r), c + glm::dvec2(r)});
+    p.note(c - glm::dvec2(r)), p.note(c + glm::dvec2(r));
     if (!pt.label.empty())
-        p.labels.push_back({0, pt.label, darker(rgba, 0.8f),
-                            LabelPlacer::around(c, p.text_size(pt.label), r + 5)});
+        p.labels.push_back(
+            {pt.label, darker(rgba, 0.8f), label_priority(pt.priority, pt.style, 3), c, r + 5});
 }
 
 void draw_handle(Painter& p, const Handle2& h, bool hot) {
@@ -325,44 +324,40 @@ void draw_handle(Painter& p, const Handle2& h, bool hot) {
     p.placer.avoid_box({c - glm::dvec2(half), c + glm::dvec2(half)});
 }
 
-// --- [labels] --------------------------------------------------------------------------------
-
-void draw_labels(Painter& p) {
-    std::stable_sort(
-        p.labels.begin(), p.labels.end(),
-        [](const PendingLabel& a, const PendingLabel& b) { return a.priority < b.priority; });
-    const float size = p.fonts.ui->FontSize;
-    for (const PendingLabel& l : p.labels) {
-        if (l.corners.empty()) continue;
-        const Box box = p.placer.place(p.text_size(l.text), l.corners);
-        p.dl->AddRectFilled(im(box.min), im(box.max), im_colour(kLabelHalo), 3.0f);
-        p.dl->AddText(p.fonts.ui, size, im(box.min + glm::dvec2(3, 1)), im_colour(l.rgba),
-                      l.text.c_str());
-    }
-}
-
 }  // namespace
 
 // --- [draw_scene] ----------------------------------------------------------------------------
 
-void draw_scene(ImDrawList* dl, const ScreenMap& map, const Scene& scene, const Fonts& fonts,
-                int hot_handle, const std::vector<Box>& keep_clear, GridTextures* textures) {
-    Painter p{dl, map, fonts, map.canvas.grown(kSafeMargin), LabelPlacer(map.canvas), {}, textures};
+Box draw_scene(ImDrawList* dl, const ScreenMap& map, const Layer2& layer, const Fonts& fonts,
+               int hot_handle, const std::vector<Box>& keep_clear, GridTextures* textures,
+               Recording recording, std::size_t first_texture_slot) {
+    Painter p{dl,
+              map,
+              fonts,
+              map.canvas.grown(kSafeMargin),
+              LabelPlacer(map.canvas),
+              {},
+              textures,
+              first_texture_slot};
     for (const Box& b : keep_clear) p.placer.keep_clear(b);
-    for (const PixelGrid2& g : scene.grids) draw_pixel_grid(p, g);
-    for (const HalfPlane2& h : scene.half_planes) draw_half_plane(p, h);
-    for (const Polygon2& poly : scene.polygons) draw_polygon(p, poly);
-    for (const Segment2& s : scene.segments) draw_segment(p, s);
-    for (const Point2& pt : scene.points) draw_point(p, pt);
-    for (std::size_t i = 0; i < scene.handles.size(); ++i)
-        draw_handle(p, scene.handles[i], static_cast<int>(i) == hot_handle);
-    for (const Label2& l : scene.labels) {
+    for (const PixelGrid2& g : layer.grids) draw_pixel_grid(p, g);
+    for (const HalfPlane2& h : layer.half_planes) draw_half_plane(p, h);
+    for (const Polygon2& poly : layer.polygons) draw_polygon(p, poly);
+    for (const Segment2& s : layer.segments) draw_segment(p, s);
+    for (const Point2& pt : layer.points) draw_point(p, pt);
+    for (std::size_t i = 0; i < layer.handles.size(); ++i)
+        draw_handle(p, layer.handles[i], static_cast<int>(i) == hot_handle);
+    for (const Label2& l : layer.labels) {
         if (l.text.empty()) continue;
         const glm::dvec2 at = map.to_screen(l.p);
-        p.labels.push_back({1, l.text, darker(style_rgba(l.style), 0.8f),
-                            LabelPlacer::around(at, p.text_size(l.text), 9)});
+        p.labels.push_back({l.text, darker(style_rgba(l.style), 0.8f),
+                            label_priority(l.priority, l.style, 2), at, 9});
     }
-    draw_labels(p);
+    const std::vector<PlacedLabel> placed = p.placer.place_all(
+        std::move(p.labels), [&](const std::string& t) { return p.text_size(t); });
+    paint_labels(dl, placed, p.placer, fonts, recording.record, recording.panel);
+    for (const PlacedLabel& l : placed) p.note(l.box.min), p.note(l.box.max);
+    return p.drawn;
 }
 
 }  // namespace cg::viewer

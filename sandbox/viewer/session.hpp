@@ -45,9 +45,13 @@ struct NarrationLog {
     std::vector<StepInfo> steps;
 };
 
+struct LayoutRecord;
+
 struct CanvasState {
     View2 view;
     bool fit_pending = true;       // fit the view to the scene when next drawn (size known then)
+    // The sizes the world and the 3D view were last fitted at: a resize fits them again.
+    glm::dvec2 fitted_world{0, 0}, fitted_3d{0, 0};
     int dragged_handle = -1;       // index into Scene::handles while one is dragged
     glm::dvec2 grab_offset{0, 0};  // handle minus mouse, in world units: no jump on grab
     bool panning = false;
@@ -157,6 +161,8 @@ struct Session {
 
     CanvasState canvas;
     Box canvas_rect{{0, 0}, {0, 0}};  // where the last frame put the canvas (display pixels)
+    // When set, the next frame's canvas writes there what it placed where (layout.hpp).
+    LayoutRecord* layout_record = nullptr;
 
     // --- studying ---
     LessonLibrary lessons;  // loaded at start-up; broken files are listed in lessons.errors

@@ -120,6 +120,7 @@ void draw_help(Session& s, ImVec2 display) {
         {"Home", "back to step 0"},
         {"End", "run to the end (stops at a breakpoint)"},
         {"P", "play / pause"},
+        {"F", "frame: fit the picture to what the step is about"},
         {"M", "next mode: Watch, Predict, Find the bug"},
         {"1 … 9", "Predict: choose the next step's event"},
         {"Enter", "Predict: reveal the step and grade the prediction"},

@@ -25,6 +25,9 @@ struct View3 {
     glm::dvec3 target{0, 0, 0};       // the point orbited, at the canvas's centre
     double distance = 10;             // from the camera to the target
     double fov_y_deg = 30;
+    // Orthographic: parallel projection, `focal() / distance` pixels per world unit at any
+    // depth (a planar construction seen face-on keeps its right angles and lengths).
+    bool orthographic = false;
 };
 
 // The camera with the interaction's memory: a drag remembers where it started.
@@ -41,9 +44,10 @@ struct Projector {
     View3 view;
 
     glm::dvec3 to_view(glm::dvec3 p) const { return view.rotation * (p - view.target); }
-    // Distance in front of the camera (> 0 in front).
+    // Distance in front of the camera (> 0 in front); orthographically, only an order.
     double depth(glm::dvec3 v) const { return view.distance - v.z; }
-    double near() const { return 0.02 * view.distance; }
+    // Nothing is cut orthographically: the camera sees the whole slab.
+    double near() const { return view.orthographic ? -1e300 : 0.02 * view.distance; }
     double focal() const;  // pixels
     glm::dvec2 centre() const { return (canvas.min + canvas.max) * 0.5; }
     // Screen position of a view-space point in front of the near plane.
@@ -53,5 +57,9 @@ struct Projector {
 
 // The default orientation: looking at the origin from above the +x/+z quadrant, y up.
 glm::dquat default_rotation();
+
+// The rotation (world → view) of a camera looking along `look` with `up` up on screen; the
+// default rotation when `look` is zero or parallel to `up`.
+glm::dquat look_rotation(glm::dvec3 look, glm::dvec3 up);
 
 }  // namespace cg::viewer
