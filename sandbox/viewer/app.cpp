@@ -59,6 +59,12 @@ bool on_key(Session& s, const SDL_KeyboardEvent& key) {
         case SDLK_f:  // frame: fit the views to what the step is about
             s.canvas.fit_pending = true;
             return true;
+        case SDLK_LEFTBRACKET:  // fold or unfold the side panels
+            s.fold_left = !s.fold_left;
+            return true;
+        case SDLK_RIGHTBRACKET:
+            s.fold_right = !s.fold_right;
+            return true;
         case SDLK_LEFT:
             if (navigating) return false;
             s.step_back();

@@ -67,6 +67,11 @@ void apply_style() {
     style.FrameRounding = 3;
     style.GrabRounding = 3;
     style.WindowBorderSize = 1;
+    // Every field, check box and radio button outlined: unselected radio buttons were nearly
+    // invisible, light grey on the light panels.
+    style.FrameBorderSize = 1;
+    style.AntiAliasedLinesUseTex = false;
+    style.Colors[ImGuiCol_Border] = ImVec4(0.62f, 0.64f, 0.68f, 0.75f);
     style.FramePadding = ImVec2(6, 4);
     style.ItemSpacing = ImVec2(8, 6);
     style.Colors[ImGuiCol_WindowBg] = ImVec4(0.965f, 0.965f, 0.97f, 1.0f);

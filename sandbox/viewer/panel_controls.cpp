@@ -205,7 +205,9 @@ void draw_controls_panel(Session& s) {
         std::max(ImGui::GetContentRegionAvail().y - files - spacing, ImGui::GetFrameHeight() * 2);
     const float width = ImGui::GetContentRegionAvail().x;
     if (width >= 760) {  // side by side: the step now, and the story so far
-        ImGui::BeginChild("now", ImVec2(std::round(width * 0.6f), body));
+        // Predicting, the question and its fields take more of the row than a narration.
+        const float share = s.study.mode == Mode::Predict ? 0.68f : 0.6f;
+        ImGui::BeginChild("now", ImVec2(std::round(width * share), body));
         draw_now(s);
         ImGui::EndChild();
         ImGui::SameLine();

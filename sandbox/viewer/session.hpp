@@ -186,6 +186,11 @@ struct Session {
     int followed_line = 0;              // the pseudocode line last scrolled into view
     std::string followed_event;         // ... and the event in the legend
 
+    // --- the window ---
+    // The side panels folded to a strip, giving their width to the canvas: the lesson panel
+    // on the left ([ or its ◀ button) and the code column on the right (] or its ▶ button).
+    bool fold_left = false, fold_right = false;
+
     // --- the keyboard ---
     bool show_help = false;    // the list of keys (F1 or ?)
     int panel_step = 0;        // Tab (+1) or Shift-Tab (−1): focus the next or previous panel

@@ -19,7 +19,10 @@ namespace {
 // The window's regions: the right column runs the full height (pseudocode, variables,
 // events), the bottom row spans the rest of the width (controls and narration), and the
 // left panel (algorithm, lessons, exam) and the canvas share what is left above it. The left
-// panel is wider while a lesson or an exam is in it: that is text to read.
+// panel is wider while a lesson or an exam is in it: that is text to read; the bottom row is
+// taller while predicting: the question, its fields, Reveal and the verdict all show at once.
+// Either side panel folds to a strip (kFoldedWidth): at 1280×720 the canvas gets half the
+// width with both open, and nearly all of it with both folded.
 struct Layout {
     ImVec2 left_pos, left_size;
     ImVec2 canvas_pos, canvas_size;
@@ -27,20 +30,29 @@ struct Layout {
     ImVec2 code_pos, code_size, vars_pos, vars_size, events_pos, events_size;
 };
 
+constexpr float kFoldedWidth = 30;
+
+struct LayoutWish {
+    bool reading = false;     // a lesson or an exam open in the left panel
+    bool predicting = false;  // Predict mode: its controls in the bottom row
+    bool fold_left = false, fold_right = false;
+};
+
 // `code_height(width)` is the height the pseudocode needs in a column that wide; the variables
 // and events share what is left.
 template <class CodeHeight>
-Layout compute_layout(ImVec2 d, CodeHeight code_height, bool reading) {
-    const float left =
-        reading ? std::clamp(d.x * 0.27f, 250.0f, 460.0f) : std::clamp(d.x * 0.21f, 200.0f, 360.0f);
-    const float right = std::clamp(d.x * 0.27f, 230.0f, 460.0f);
-    float code = code_height(right);
-    // Taller while reading: the narration, its formula and the lesson's note share it.
-    const float bottom = std::clamp(d.y * (reading ? 0.33f : 0.30f), 240.0f, 330.0f);
+Layout compute_layout(ImVec2 d, CodeHeight code_height, LayoutWish w) {
+    const float left = w.fold_left ? kFoldedWidth
+                       : w.reading ? std::clamp(d.x * 0.25f, 250.0f, 460.0f)
+                                   : std::clamp(d.x * 0.21f, 200.0f, 360.0f);
+    const float right = w.fold_right ? kFoldedWidth : std::clamp(d.x * 0.24f, 230.0f, 460.0f);
+    float code = w.fold_right ? d.y : code_height(right);
+    const float bottom = w.predicting ? std::clamp(d.y * 0.44f, 300.0f, 420.0f)
+                                      : std::clamp(d.y * (w.reading ? 0.33f : 0.30f), 240.0f, 330.0f);
     const float top = std::max(d.y - bottom, 100.0f);
     const float middle = std::max(d.x - left - right, 100.0f);
-    code = std::round(std::clamp(code, d.y * 0.2f, d.y * 0.45f));
-    const float vars = std::round((d.y - code) * 0.4f);
+    if (!w.fold_right) code = std::round(std::clamp(code, d.y * 0.2f, d.y * 0.45f));
+    const float vars = w.fold_right ? 0 : std::round((d.y - code) * 0.4f);
     Layout l;
     l.left_pos = {0, 0};
     l.left_size = {left, top};
@@ -121,6 +133,7 @@ void draw_help(Session& s, ImVec2 display) {
         {"End", "run to the end (stops at a breakpoint)"},
         {"P", "play / pause"},
         {"F", "frame: fit the picture to what the step is about"},
+        {"[  /  ]", "fold or unfold the left panel / the code column"},
         {"M", "next mode: Watch, Predict, Find the bug"},
         {"1 … 9", "Predict: choose the next step's event"},
         {"Enter", "Predict: reveal the step and grade the prediction"},
@@ -173,14 +186,43 @@ void tab(Session& s, const char* label, Tab t, bool passing_request, Draw draw) 
     ImGui::EndTabItem();
 }
 
+// A folded panel: a strip with the button that unfolds it.
+void draw_folded(Session& s, const char* button, const char* widget, const char* tip, bool& fold) {
+    ImGui::SetCursorPosX(std::max(0.0f, (ImGui::GetWindowWidth() - ImGui::GetFrameHeight()) / 2 - 2));
+    if (ImGui::SmallButton(button)) fold = false;
+    s.note_widget(widget);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+}
+
 void draw_left_panel(Session& s) {
+    if (s.fold_left) {
+        draw_folded(s, "»##unfold", "unfold left", "Show the lessons, the algorithm and the exam  ([)",
+                    s.fold_left);
+        return;
+    }
     if (!ImGui::BeginTabBar("left")) return;  // not drawn: a request waits for the next frame
     const bool passing_request = s.tab_requested;
     s.tab_requested = false;
     tab(s, "Algorithm", Tab::Algorithm, passing_request, [&] { draw_algorithm_panel(s); });
     tab(s, "Lessons", Tab::Lessons, passing_request, [&] { draw_lessons_panel(s); });
     tab(s, "Exam", Tab::Exam, passing_request, [&] { draw_exam_panel(s); });
+    if (ImGui::TabItemButton("«", ImGuiTabItemFlags_Trailing | ImGuiTabItemFlags_NoTooltip))
+        s.fold_left = true;
+    s.note_widget("fold left");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Fold this panel: more room for the picture  ([)");
     ImGui::EndTabBar();
+}
+
+// The code column's fold button, at the right end of the pseudocode panel's first row.
+void draw_fold_right(Session& s) {
+    const ImVec2 keep = ImGui::GetCursorPos();
+    const float w = ImGui::CalcTextSize("»").x + ImGui::GetStyle().FramePadding.x * 2;
+    ImGui::SetCursorPos(ImVec2(ImGui::GetWindowContentRegionMax().x - w, keep.y));
+    if (ImGui::SmallButton("»##fold")) s.fold_right = true;
+    s.note_widget("fold right");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Fold the pseudocode, variables and events: more room for the picture  (])");
+    ImGui::SetCursorPos(keep);
 }
 
 void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
@@ -209,7 +251,8 @@ void draw_ui(Session& s, ImVec2 display, bool full_ui, bool interactive) {
         return;
     }
     const Layout l = compute_layout(
-        display, [&](float width) { return pseudocode_height(s, width); }, s.tab != Tab::Algorithm);
+        display, [&](float width) { return pseudocode_height(s, width); },
+        {s.tab != Tab::Algorithm, s.study.mode == Mode::Predict, s.fold_left, s.fold_right});
     if (interactive) move_keyboard(s);
     s.focused_panel.clear();
     panel(s, "Study", l.left_pos, l.left_size, ImGuiWindowFlags_NoTitleBar,
@@ -217,9 +260,19 @@ void draw_ui(Session& s, ImVec2 display, bool full_ui, bool interactive) {
     canvas_window(s, l.canvas_pos, l.canvas_size, interactive);
     panel(s, "Step", l.bottom_pos, l.bottom_size, ImGuiWindowFlags_NoScrollbar,
           [&] { draw_controls_panel(s); });
-    panel(s, "Pseudocode", l.code_pos, l.code_size, 0, [&] { draw_pseudocode_panel(s); });
-    panel(s, "Variables", l.vars_pos, l.vars_size, 0, [&] { draw_variables_panel(s); });
-    panel(s, "Events", l.events_pos, l.events_size, 0, [&] { draw_events_panel(s); });
+    if (s.fold_right) {
+        panel(s, "Code", l.code_pos, l.code_size, ImGuiWindowFlags_NoTitleBar, [&] {
+            draw_folded(s, "«##unfold", "unfold right", "Show the pseudocode, variables and events  (])",
+                        s.fold_right);
+        });
+    } else {
+        panel(s, "Pseudocode", l.code_pos, l.code_size, 0, [&] {
+            draw_fold_right(s);
+            draw_pseudocode_panel(s);
+        });
+        panel(s, "Variables", l.vars_pos, l.vars_size, 0, [&] { draw_variables_panel(s); });
+        panel(s, "Events", l.events_pos, l.events_size, 0, [&] { draw_events_panel(s); });
+    }
     draw_compare_editor(s);
     draw_help(s, display);
 }
