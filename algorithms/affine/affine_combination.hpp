@@ -93,6 +93,11 @@ struct AffineCombination {
 
     static Row row_of(const std::string& expression, const affine::Analysis& a);
 
+    // An expression as a person writes it rather than as it is typed: Σ with its limits, sub-
+    // and superscripts, Bᵢⁿ(t), sin²(t), the minus sign ("sum_{i=0}^{3} B(3,i,t) P_i" →
+    // "Σᵢ₌₀³ Bᵢ³(t) Pᵢ"). For the picture; a part Unicode cannot raise or lower stays as typed.
+    static std::string display(const std::string& expression);
+
   private:
     static Parsed parse(const Input& in);
     [[gnu::cold]] static void narrate(const State& s, StepInfo& info);

@@ -471,3 +471,26 @@ TEST_CASE("affine-combination: the picture — the parse tree coloured by type, 
     AffineCombination::draw(s, end);
     CHECK(end.points.back().style.role == cg::Role::Discarded);
 }
+
+TEST_CASE("affine-combination: the picture writes expressions as a person writes them",
+          "[affine][affine-combination]") {
+    CHECK(AffineCombination::display("sum_{i=0}^{3} B(3,i,t) P_i") == "Σᵢ₌₀³ Bᵢ³(t) Pᵢ");
+    CHECK(AffineCombination::display("(1 − t)^3 P_0 + 3t(1 - t)^2 P_1") ==
+          "(1 − t)³ P₀ + 3t(1 − t)² P₁");
+    CHECK(AffineCombination::display("sin(t)^2 P + cos(t)^2 Q") == "sin²(t) P + cos²(t) Q");
+    CHECK(AffineCombination::display("B_i^3(t) P_{i+1}") == "Bᵢ³(t) Pᵢ₊₁");
+    CHECK(AffineCombination::display("P dot Q cross v") == "P · Q × v");
+    CHECK(AffineCombination::display("2e-3 A") == "2e−3 A");
+    // What Unicode cannot lower stays as typed.
+    CHECK(AffineCombination::display("P_Q + A_{2b}") == "P_Q + A_{2b}");
+    // The picture uses it: the tree's leaves and the list of verdicts.
+    auto s = AffineCombination::start(make({"P"}, {}, {"sum_{i=0}^{3} B(3,i,t) P_i"}));
+    AffineCombination::step(s, nullptr);
+    cg::Scene pic;
+    AffineCombination::draw(s, pic);
+    bool root = false, listed = false;
+    for (const auto& p : pic.points) root = root || p.label == "Σᵢ₌₀³  point";
+    for (const auto& l : pic.labels) listed = listed || l.text == "1. Σᵢ₌₀³ Bᵢ³(t) Pᵢ  →  point";
+    CHECK(root);
+    CHECK(listed);
+}
