@@ -26,7 +26,7 @@ const std::map<std::string_view, std::string_view>& symbols() {
         {"otimes", "⊗"}, {"in", "∈"}, {"notin", "∉"}, {"ni", "∋"}, {"subset", "⊂"},
         {"subseteq", "⊆"}, {"supset", "⊃"}, {"supseteq", "⊇"}, {"cup", "∪"}, {"cap", "∩"},
         {"setminus", "∖"}, {"emptyset", "∅"}, {"varnothing", "∅"}, {"forall", "∀"},
-        {"exists", "∃"}, {"neg", "¬"}, {"lnot", "¬"}, {"land", "∧"}, {"wedge", "∧"}, {"lor", "∨"},
+        {"exists", "∃"}, {"nexists", "∄"}, {"neg", "¬"}, {"lnot", "¬"}, {"land", "∧"}, {"wedge", "∧"}, {"lor", "∨"},
         {"vee", "∨"}, {"perp", "⊥"}, {"parallel", "∥"}, {"angle", "∠"}, {"mid", "|"},
         // arrows
         {"to", "→"}, {"rightarrow", "→"}, {"leftarrow", "←"}, {"gets", "←"},
@@ -34,8 +34,11 @@ const std::map<std::string_view, std::string_view>& symbols() {
         {"Leftarrow", "⇐"}, {"Leftrightarrow", "⇔"}, {"iff", "⇔"}, {"uparrow", "↑"},
         {"downarrow", "↓"},
         // big operators and calculus
-        {"sum", "∑"}, {"prod", "∏"}, {"int", "∫"}, {"oint", "∮"}, {"partial", "∂"}, {"nabla", "∇"},
-        {"infty", "∞"},
+        {"sum", "∑"}, {"prod", "∏"}, {"int", "∫"}, {"iint", "∬"}, {"iiint", "∭"}, {"oint", "∮"},
+        {"partial", "∂"}, {"nabla", "∇"}, {"infty", "∞"},
+        {"ll", "≪"}, {"gg", "≫"}, {"leqslant", "≤"}, {"geqslant", "≥"}, {"lesssim", "≲"},
+        {"gtrsim", "≳"}, {"bmod", " mod "}, {"mod", " mod "}, {"triangle", "△"},
+        {"square", "□"}, {"checkmark", "✓"}, {"cross", "✗"}, {"top", "⊤"}, {"intercal", "ᵀ"},
         // delimiters
         {"lvert", "|"}, {"rvert", "|"}, {"vert", "|"}, {"lVert", "‖"}, {"rVert", "‖"},
         {"Vert", "‖"}, {"langle", "⟨"}, {"rangle", "⟩"}, {"lceil", "⌈"}, {"rceil", "⌉"},
@@ -91,7 +94,7 @@ bool is_style(std::string_view name) {
     return one_of(name, {"mathrm", "mathbf", "mathit", "mathsf", "mathtt", "mathcal",
                          "operatorname", "boldsymbol", "bm", "vec", "hat", "bar", "overline",
                          "underline", "tilde", "widehat", "widetilde", "dot", "ddot",
-                         "mathring", "displaystyle", "overrightarrow", "overleftarrow",
+                         "mathring", "displaystyle", "textstyle", "scriptstyle", "overrightarrow", "overleftarrow",
                          "underbrace", "overbrace"});
 }
 
@@ -496,6 +499,16 @@ std::string convert(std::string_view s) {
 }
 
 }  // namespace
+
+bool known_command(std::string_view name) {
+    static const std::initializer_list<std::string_view> structural = {
+        "frac", "tfrac", "dfrac", "cfrac", "sqrt", "binom", "tbinom", "dbinom", "mathbb", "begin",
+        "end"};
+    if (name.size() == 1 && escaped(name[0]).data() != nullptr) return true;
+    if (name.size() == 1 && !std::isalpha(static_cast<unsigned char>(name[0]))) return true;
+    return symbols().count(name) || is_style(name) || is_text(name) || is_sizing(name) ||
+           is_function(name) || one_of(name, structural);
+}
 
 std::string math_to_unicode(std::string_view latex) {
     return tidy_spaces(convert(latex));

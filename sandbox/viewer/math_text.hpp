@@ -17,6 +17,12 @@
 
 namespace cg::viewer {
 
+// Whether the converter knows the command `name` (without its backslash): a symbol, a style,
+// a function name, a fraction, a root, an environment… An unknown one is shown by its name,
+// which reads wrong ("\\ll" as "ll"): the tests list every command the lessons and the
+// formulas use and fail on one not known here.
+bool known_command(std::string_view name);
+
 // One formula, without the $ delimiters.
 std::string math_to_unicode(std::string_view latex);
 

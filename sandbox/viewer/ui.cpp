@@ -213,17 +213,26 @@ void draw_left_panel(Session& s) {
     ImGui::EndTabBar();
 }
 
-// The code column's fold button, at the right end of the pseudocode panel's first row.
+// The code column's fold button, at the right end of the pseudocode panel's title bar.
 void draw_fold_right(Session& s) {
-    const ImVec2 keep = ImGui::GetCursorPos();
+    ImGuiWindow* window = ImGui::GetCurrentWindow();
+    const ImRect bar = window->TitleBarRect();
+    const ImVec2 keep = ImGui::GetCursorScreenPos();
     const float w = ImGui::CalcTextSize("»").x + ImGui::GetStyle().FramePadding.x * 2;
-    ImGui::SetCursorPos(ImVec2(ImGui::GetWindowContentRegionMax().x - w, keep.y));
+    ImGui::PushClipRect(bar.Min, bar.Max, false);
+    ImGui::SetCursorScreenPos(
+        ImVec2(bar.Max.x - w - 6, bar.Min.y + (bar.GetHeight() - ImGui::GetFontSize()) / 2));
     if (ImGui::SmallButton("»##fold")) s.fold_right = true;
     s.note_widget("fold right");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Fold the pseudocode, variables and events: more room for the picture  (])");
-    ImGui::SetCursorPos(keep);
+    ImGui::PopClipRect();
+    ImGui::SetCursorScreenPos(keep);
 }
+
+}  // namespace
+
+namespace {
 
 void canvas_window(Session& s, ImVec2 pos, ImVec2 size, bool interactive) {
     s.canvas_rect = Box{{pos.x, pos.y}, {pos.x + size.x, pos.y + size.y}};

@@ -1,6 +1,13 @@
 // The viewer's LaTeX → Unicode converter, on the notation the lessons and steps use.
 #include <catch2/catch.hpp>
 
+#include <cctype>
+#include <fstream>
+#include <functional>
+#include <map>
+
+#include "io/lesson.hpp"
+#include "io/registry.hpp"
 #include "viewer/math_text.hpp"
 
 using cg::viewer::math_to_unicode;
@@ -83,4 +90,65 @@ TEST_CASE("math text: only the parts between dollars are math", "[gui][math]") {
     CHECK(text_to_unicode("costs \\$5, a - b stays") == "costs $5, a - b stays");
     CHECK(text_to_unicode("an unmatched $x_0 stays") == "an unmatched $x_0 stays");
     CHECK(text_to_unicode("- left: $p_1 = -dx$\n- right") == "- left: p₁ = −dx\n- right");
+}
+
+// Every LaTeX command the lessons' math ($…$ in any of their texts) and the steps' formulas
+// (every preset run to its end) use must be one the converter knows: an unknown one is shown
+// by its bare name ("\ll" as "ll", "\iint" as "iint").
+TEST_CASE("math text: every command the lessons and the steps' formulas use is known",
+          "[gui][math]") {
+    const cg::Registry registry = cg::builtin_registry();
+    const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", registry);
+    REQUIRE(lib.errors.empty());
+    std::map<std::string, std::string> used;  // command → where first seen
+    auto commands = [&](const std::string& latex, const std::string& where) {
+        for (std::size_t i = 0; i + 1 < latex.size(); ++i) {
+            if (latex[i] != '\\' || !std::isalpha(static_cast<unsigned char>(latex[i + 1]))) {
+                if (latex[i] == '\\') ++i;  // \\ and \{ are not commands with names
+                continue;
+            }
+            std::size_t j = i + 1;
+            while (j < latex.size() && std::isalpha(static_cast<unsigned char>(latex[j]))) ++j;
+            used.emplace(latex.substr(i + 1, j - i - 1), where);
+            i = j - 1;
+        }
+    };
+    auto math_in = [&](const std::string& text, const std::string& where) {
+        for (std::size_t i = 0; (i = text.find('$', i)) != std::string::npos;) {
+            if (i > 0 && text[i - 1] == '\\') { ++i; continue; }
+            const std::size_t close = text.find('$', i + 1);
+            if (close == std::string::npos) break;
+            commands(text.substr(i + 1, close - i - 1), where);
+            i = close + 1;
+        }
+    };
+    std::size_t formulas = 0;
+    for (const cg::Lesson& l : lib.lessons) {
+        const std::string file = l.file;
+        std::function<void(const cg::json&)> walk = [&](const cg::json& j) {
+            if (j.is_string()) math_in(j.get<std::string>(), file);
+            if (j.is_array() || j.is_object())
+                for (const cg::json& v : j) walk(v);
+        };
+        std::ifstream in(file);
+        walk(cg::json::parse(in));
+        const cg::Algorithm* a = registry.find(l.algorithm);
+        REQUIRE(a);
+        for (const cg::LessonPreset& p : l.presets) {
+            auto run = a->create(p.input);
+            while (!run->done()) {
+                cg::StepInfo info;
+                run->step(&info);
+                if (!info.math.empty()) ++formulas, commands(info.math, l.id + " \"" + p.name + "\" (" + info.event + ")");
+            }
+        }
+    }
+    CHECK(formulas > 1000);
+    CHECK(used.size() > 40);
+    for (const auto& [name, where] : used) {
+        CAPTURE(name, where);
+        CHECK(cg::viewer::known_command(name));
+    }
+    CHECK(math_to_unicode(R"(d \ll D)") == "d ≪ D");
+    CHECK(math_to_unicode(R"(\iint_A dA)") == "∬_A dA");
 }
