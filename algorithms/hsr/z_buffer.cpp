@@ -1,4 +1,4 @@
-// Sections: [spec] [advance] [narrate] [result and render] [draw]
+// Sections: [spec] [advance] [narrate] [result and render]; the picture is in z_buffer_draw.cpp
 #include "hsr/z_buffer.hpp"
 
 #include <algorithm>
@@ -342,80 +342,6 @@ ZBuffer::Result ZBuffer::result(const State& s) {
         }
     }
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-void ZBuffer::draw(const State& s, Scene& scene) {
-    const auto& sc = s.in.scene;
-    const int w = static_cast<int>(sc.width), h = static_cast<int>(sc.height);
-    const double W = w, H = h, gap = std::max(1.0, std::round(W / 8));
-    const glm::dvec2 depth_origin{W + gap, 0};
-    const Result r = result(s);
-
-    double zmin = kFar, zmax = -kFar;
-    for (const auto& p : sc.polygons)
-        for (const auto& v : p.vertices) zmin = std::min(zmin, v.z), zmax = std::max(zmax, v.z);
-
-    PixelGrid2 colour, depth;
-    colour.width = depth.width = w;
-    colour.height = depth.height = h;
-    depth.origin = depth_origin;
-    colour.rgba.assign(r.ids.size(), 0);
-    depth.rgba.assign(r.ids.size(), 0);
-    for (std::size_t a = 0; a < r.ids.size(); ++a) {
-        if (r.ids[a] < 0) continue;
-        colour.rgba[a] = pack_rgba(sc.polygons[static_cast<std::size_t>(r.ids[a])].color);
-        const double t = zmax > zmin ? std::clamp((r.depth[a] - zmin) / (zmax - zmin), 0.0, 1.0) : 0.5;
-        const double grey = (40 + 190 * t) / 255;  // near dark, far light
-        depth.rgba[a] = pack_rgba({grey, grey, grey});
-    }
-    scene.grids.push_back(std::move(colour));
-    scene.grids.push_back(std::move(depth));
-    for (const glm::dvec2 o : {glm::dvec2(0, 0), depth_origin})
-        scene.polygons.push_back({{o, o + glm::dvec2(W, 0), o + glm::dvec2(W, H), o + glm::dvec2(0, H)},
-                                  {Role::Construction, 1.0f},
-                                  true,
-                                  false});
-    scene.labels.push_back({{W / 2, H + 0.6}, "colour buffer", {Role::Neutral}});
-    scene.labels.push_back({depth_origin + glm::dvec2(W / 2, H + 0.6),
-                            "depth buffer (dark = near, light = far, empty = ∞)", {Role::Neutral}});
-
-    // Every polygon's outline, thin; the one being drawn, thick and orange, on both buffers.
-    const bool finished = s.phase == Phase::Done || s.phase == Phase::Finish;
-    int current = -1;
-    if (s.last == Phase::Polygon) current = s.k - 1;
-    else if (s.last == Phase::Setup || s.last == Phase::Pixel) current = s.phase == Phase::Setup ? s.k - 1 : s.k;
-    if (finished && s.last != Phase::Polygon && s.last != Phase::Pixel) current = -1;
-    for (std::size_t k = 0; k < sc.polygons.size(); ++k) {
-        std::vector<glm::dvec2> outline;
-        for (const auto& v : sc.polygons[k].vertices) outline.emplace_back(v.x, v.y);
-        const bool active = static_cast<int>(k) == current;
-        const Style style = active ? Style{Role::Active, 3.0f} : Style{Role::Subject, 1.5f, true};
-        scene.polygons.push_back({outline, style, true, false});
-        if (active) {
-            std::vector<glm::dvec2> shifted = outline;
-            for (auto& p : shifted) p += depth_origin;
-            scene.polygons.push_back({shifted, style, true, false});
-        }
-        scene.labels.push_back({outline[0], "P" + std::to_string(k), {active ? Role::Active : Role::Subject}});
-        for (std::size_t i = 0; i < outline.size(); ++i) {
-            const std::string base = "/polygons/" + std::to_string(k) + "/vertices/" + std::to_string(i);
-            scene.handles.push_back({outline[i], "P" + std::to_string(k) + " vertex " + std::to_string(i),
-                                     base + "/0", base + "/1"});
-        }
-    }
-    // The pixel just compared.
-    if (s.last == Phase::Pixel) {
-        for (const glm::dvec2 o : {glm::dvec2(0, 0), depth_origin}) {
-            const glm::dvec2 c = o + glm::dvec2(s.pi, s.pj);
-            scene.polygons.push_back({{c, c + glm::dvec2(1, 0), c + glm::dvec2(1, 1), c + glm::dvec2(0, 1)},
-                                      {s.won ? Role::Kept : Role::Discarded, 3.0f},
-                                      true,
-                                      false});
-        }
-        scene.points.push_back({{s.pi + 0.5, s.pj + 0.5}, "z = " + num(s.z, 4), {Role::Active}, 4.0f});
-    }
 }
 
 }  // namespace cg
