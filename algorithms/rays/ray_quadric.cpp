@@ -1,6 +1,6 @@
-// Sections: [helpers] [spec] [validate] [advance] [narrate] [draw]
+// Sections: [helpers] [spec] [validate] [advance] [narrate]; the picture is in
+// ray_quadric_draw.cpp.
 #include "rays/ray_quadric.hpp"
-#include "rays/quadric_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,6 @@ namespace cg {
 
 namespace {
 
-using glm::dvec2;
 using glm::dvec3;
 using Phase = RayQuadric::Phase;
 using Verdict = RayQuadric::Verdict;
@@ -176,18 +175,20 @@ const Spec& RayQuadric::spec() {
         },
         {},  // no sliders
         {
-            .predict = {
-                {"coefficients", {"b", "c"}},
-                {"two-roots", {"discriminant"}},
-                {"nearest", {"t"}},
-                {"hit-point", {"P"}},
-                {"normal", {"n"}},
-            },
-            .mistakes = {
-                {"normal", "n", "copy:grad_F", "forgot to normalise the gradient"},
-                {"coefficients", "c", "negate", "took c = r² − |E − C|²: its sign flipped"},
-                {"coefficients", "b", "negate", "took the sign of b wrong"},
-            },
+            .predict =
+                {
+                    {"coefficients", {"b", "c"}},
+                    {"two-roots", {"discriminant"}},
+                    {"nearest", {"t"}},
+                    {"hit-point", {"P"}},
+                    {"normal", {"n"}},
+                },
+            .mistakes =
+                {
+                    {"normal", "n", "copy:grad_F", "forgot to normalise the gradient"},
+                    {"coefficients", "c", "negate", "took c = r² − |E − C|²: its sign flipped"},
+                    {"coefficients", "b", "negate", "took the sign of b wrong"},
+                },
         },
     };
     return spec;
@@ -215,8 +216,9 @@ void RayQuadric::validate(const Input& in) {
                          "is too far away for double precision in model space (" + given(o) + ")");
     if (!std::isfinite(q.a) || !std::isfinite(q.b) || !std::isfinite(q.c) ||
         !std::isfinite(q.b * q.b - 4 * q.a * q.c))
-        throw InputError("origin", "and direction give a quadratic that overflows (a = " +
-                                       given(q.a) + ", b = " + given(q.b) + ", c = " + given(q.c) + ")");
+        throw InputError("origin",
+                         "and direction give a quadratic that overflows (a = " + given(q.a) +
+                             ", b = " + given(q.b) + ", c = " + given(q.c) + ")");
 }
 
 RayQuadric::State RayQuadric::start(const Input& in) {
@@ -620,121 +622,6 @@ void RayQuadric::narrate(const State& s, StepInfo& info) {
             break;
     }
     fill_vars(s, info);
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-
-// 3D: the surface as a translucent mesh of quads in a box around the action, the model frame
-// when the quadric is transformed, the ray as an arrow, its roots, the hit and the normal.
-// 2D: the quadratic f(t) = a t² + b t + c with its roots on the t axis.
-void RayQuadric::draw(const State& s, Scene& scene) {
-    const Quadric& q = s.in->quadric;
-    const double L = largest_param(q);
-    const bool solved = s.phase > Phase::Discriminant || s.phase == Phase::Done;
-    const bool have_quad = s.last >= Phase::Coefficients;
-    const bool have_roots = s.last >= Phase::Roots && s.roots.count > 0;
-
-    // Where along the ray is worth drawing: up to past the farthest root, or a few sizes.
-    const RayQuadratic model = ray_quadratic(prepare(q), s.in->origin, s.in->direction);
-    double t_end = 0;
-    if (have_roots) t_end = std::max(t_end, s.roots.t[s.roots.count - 1]);
-    const double speed = std::max(glm::length(model.direction), 1e-300);
-    if (t_end <= 0) t_end = (glm::length(model.origin) + 2 * L) / speed;
-    t_end *= 1.2;
-
-    // The surface's z range in model space: around the roots and the eye, within the slab.
-    double reach = 2 * L;
-    if (have_roots)
-        for (int i = 0; i < s.roots.count; ++i)
-            reach =
-                std::max(reach, 1.25 * std::fabs(model.origin.z + s.roots.t[i] * model.direction.z));
-    reach = std::min(reach, 50 * L);
-    double z_lo, z_hi;
-    drawn_z_range(q, reach, z_lo, z_hi);
-    add_quadric_mesh(q, z_lo, z_hi, {Role::Subject, 1.0f}, 0.18f, 24, 12, scene.faces3);
-    if (s.phase != Phase::ToModel && s.prepared.transformed) {
-        const glm::dmat4& m = q.world_from_model;
-        scene.frames3.push_back({dvec3(m[3]), dvec3(m[0]), dvec3(m[1]), dvec3(m[2]), L, "M", 0.8f});
-    }
-    scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, L, "", 0.5f});
-
-    // The ray.
-    const dvec3 E = s.in->origin, d = s.in->direction;
-    scene.segments3.push_back({E, E + t_end * d, "E + t d", {Role::Active, 2.0f}, true});
-    scene.points3.push_back({E, "E " + num(E, 4), {Role::Active}, 5.0f});
-    if (have_roots) {
-        for (int i = 0; i < s.roots.count; ++i) {
-            const double t = s.roots.t[i];
-            Role role = Role::Construction;
-            if (s.verdict[i] == Verdict::Chosen) role = Role::Kept;
-            if (s.verdict[i] == Verdict::Behind || s.verdict[i] == Verdict::OutsideSlab)
-                role = Role::Discarded;
-            if (t < 0)  // the line behind the eye, dashed, to reach a root there
-                scene.segments3.push_back(
-                    {E, E + t * d, "", {Role::Construction, 1.0f, true}, false});
-            scene.points3.push_back(
-                {E + t * d, root_name(s.roots, i) + " = " + num(t, 4), {role}, 6.0f});
-        }
-    }
-    if (s.last >= Phase::HitPoint && s.hit.hit)
-        scene.labels3.push_back({s.hit.point, "P = " + num(s.hit.point, 4), {Role::Kept}});
-    if (s.last == Phase::Normal && s.hit.has_normal)
-        scene.segments3.push_back(
-            {s.hit.point, s.hit.point + 0.6 * L * s.hit.normal, "n", {Role::Kept, 2.5f}, true});
-    scene.extent3 = std::max(3 * L, glm::length(E) * 1.1);
-
-    // 2D: f(t) over a range holding the eye (t = 0), the roots and the vertex.
-    if (!have_quad) return;
-    const RayQuadratic& f = s.quad;
-    double lo = 0, hi = t_end / 1.2;
-    if (s.roots.count > 0 && solved) {
-        lo = std::min(lo, s.roots.t[0]);
-        hi = std::max(hi, s.roots.t[s.roots.count - 1]);
-    }
-    if (f.a != 0) {
-        const double v = -f.b / (2 * f.a);
-        if (std::isfinite(v) && std::fabs(v) < 1e6 * std::max(1.0, hi - lo))
-            lo = std::min(lo, v), hi = std::max(hi, v);
-    }
-    if (!(hi > lo)) hi = lo + 1;
-    const double pad = 0.15 * (hi - lo);
-    lo -= pad, hi += pad;
-    constexpr int kSamples = 80;
-    std::vector<dvec2> curve;
-    double f_max = 0;
-    for (int i = 0; i <= kSamples; ++i) {
-        const double t = lo + (hi - lo) * i / kSamples;
-        const double v = (f.a * t + f.b) * t + f.c;
-        if (!std::isfinite(v)) continue;  // only for absurdly long rays
-        f_max = std::max(f_max, std::fabs(v));
-        curve.push_back({t, v});
-    }
-    const double scale = f_max > 0 && std::isfinite(f_max) ? 0.6 * (hi - lo) / f_max : 1.0;
-    for (dvec2& p : curve) p.y *= scale;
-    scene.segments.push_back({{lo, 0}, {hi, 0}, "t", {Role::Neutral, 1.0f}, true});
-    scene.segments.push_back({{0, -0.65 * (hi - lo)},
-                              {0, 0.65 * (hi - lo)},
-                              "",
-                              {Role::Construction, 1.0f, true},
-                              false});
-    scene.polygons.push_back({curve, {Role::Subject, 2.0f}, false, false});
-    scene.labels.push_back({{lo, 0.65 * (hi - lo)},
-                            "f(t) = " + num(f.a, 4) + "t² + " + operand(f.b) + "t + " +
-                                operand(f.c) + "  (drawn ×" + num(scale, 3) + ")",
-                            {Role::Neutral}});
-    scene.labels.push_back({{0, -0.7 * (hi - lo)}, "t = 0 (the eye)", {Role::Construction}});
-    if (solved)
-        for (int i = 0; i < s.roots.count; ++i) {
-            Role role = Role::Entering;
-            if (s.verdict[i] == Verdict::Chosen) role = Role::Kept;
-            if (s.verdict[i] == Verdict::Behind || s.verdict[i] == Verdict::OutsideSlab)
-                role = Role::Discarded;
-            scene.points.push_back({{s.roots.t[i], 0},
-                                    root_name(s.roots, i) + " = " + num(s.roots.t[i], 4),
-                                    {role},
-                                    6.0f});
-        }
 }
 
 }  // namespace cg

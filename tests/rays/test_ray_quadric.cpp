@@ -53,7 +53,7 @@ TEST_CASE("ray-quadric: the course's paraboloid question, the linear case", "[ra
     const Traced t = run_json(
         R"({"quadric": {"type": "paraboloid", "params": {"p": 1, "q": 1}}, "origin": [1, 1, 5], "direction": [0, 0, -1]})");
     CHECK(events(t) == Events{"no-transform", "coefficients", "linear", "roots", "nearest",
-                             "hit-point", "normal"});
+                              "hit-point", "normal"});
     CHECK(t.result["hit"] == true);
     CHECK(t.result["roots"] == cg::json::parse("[3]"));
     CHECK(t.result["t"] == 3);
@@ -71,7 +71,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
         const Traced t = run_json(
             R"({"quadric": {"type": "sphere", "params": {"r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})");
         CHECK(events(t) == Events{"no-transform", "coefficients", "two-roots", "roots", "nearest",
-                                 "hit-point", "normal"});
+                                  "hit-point", "normal"});
         CHECK(t.result["roots"] == cg::json::parse("[4, 6]"));
         CHECK(t.result["t"] == 4);
         CHECK(t.result["point"] == cg::json::parse("[0, 0, 1]"));
@@ -91,7 +91,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
         const Traced t = run_json(
             R"({"quadric": {"type": "ellipsoid", "params": {"a": 2, "b": 1, "c": 1}, "transform": [[1, 0, 0, 1], [0, 2, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}, "origin": [3, 0, -4], "direction": [0, 0, 2]})");
         CHECK(events(t) == Events{"to-model", "coefficients", "tangent", "roots", "nearest",
-                                 "hit-point", "normal"});
+                                  "hit-point", "normal"});
         CHECK(t.result["roots"] == cg::json::parse("[2]"));
         CHECK(t.result["point"] == cg::json::parse("[3, 0, 0]"));
         CHECK(t.result["normal"] == cg::json::parse("[1, 0, 0]"));
@@ -155,7 +155,7 @@ TEST_CASE("ray-quadric: hand cases for every branch", "[rays][ray-quadric]") {
         const Traced t = run_json(
             R"({"quadric": {"type": "cone", "params": {"p": 1, "q": 2, "r": 1}}, "origin": [0, 0, 5], "direction": [0, 0, -1]})");
         CHECK(events(t) == Events{"no-transform", "coefficients", "tangent", "roots", "nearest",
-                                 "hit-point", "apex"});
+                                  "hit-point", "apex"});
         CHECK(t.result["hit"] == true);
         CHECK(t.result["point"] == cg::json::parse("[0, 0, 0]"));
         CHECK(t.result["normal"].is_null());
@@ -497,32 +497,53 @@ TEST_CASE("ray-quadric: the picture shows the surface, the ray, the roots and f(
     cg::Scene before;
     RayQuadric::draw(s, before);
     CHECK(before.faces3.size() == 24 * 12);
-    CHECK(before.points.empty());  // no f(t) before the coefficients
+    CHECK(before.panels.empty());  // no f(t) before the coefficients
+    CHECK(before.focus3.size() == 1);
     while (!RayQuadric::done(s)) RayQuadric::step(s, nullptr);
     cg::Scene scene;
     RayQuadric::draw(s, scene);
     CHECK(scene.has_3d());
-    CHECK(scene.has_2d());
-    int roots3 = 0, roots2 = 0, kept = 0;
+    CHECK_FALSE(scene.has_2d());  // f(t) is a chart, not drawn into the world
+    int roots3 = 0, kept = 0;
+    bool hit = false;
     for (const auto& p : scene.points3) {
         roots3 += p.label.rfind("t", 0) == 0;
+        hit = hit || p.label == "P";
         kept += p.style.role == cg::Role::Kept;
     }
-    for (const auto& p : scene.points) roots2 += p.label.rfind("t", 0) == 0;
-    CHECK(roots3 == 2);
-    CHECK(roots2 == 2);
+    CHECK(roots3 == 1);  // t₂; t₁ is the hit P
+    CHECK(hit);
     CHECK(kept == 1);
     bool ray = false, normal = false;
     for (const auto& seg : scene.segments3) {
         ray = ray || (seg.arrow && seg.label == "E + t d");
-        normal = normal || (seg.arrow && seg.label == "n");
+        normal = normal || (seg.arrow && seg.label == "n" && seg.min_pixels >= 30);
     }
     CHECK(ray);
     CHECK(normal);
     // Every surface vertex lies on the sphere.
     for (const auto& f : scene.faces3)
         for (const auto& p : f.points) CHECK(glm::length(p) == Approx(1).epsilon(1e-12));
-    // The f(t) curve passes through the roots (its samples straddle them).
-    REQUIRE(scene.polygons.size() == 1);
-    CHECK(scene.polygons[0].closed == false);
+    // The camera frames the eye and the surface.
+    REQUIRE(scene.focus3.size() == 1);
+    CHECK(scene.focus3[0].hi.z >= 5);
+    CHECK(scene.focus3[0].lo.z <= -1);
+    // f(t) = t² − 10t + 24 in a chart of its own: the curve, and the roots 4 and 6 on f = 0.
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& chart = scene.panels[0];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.x.label == "t");
+    CHECK(chart.y.label == "f(t)");
+    REQUIRE(chart.polygons.size() == 1);
+    CHECK(chart.polygons[0].closed == false);
+    for (const auto& p : chart.polygons[0].points)
+        CHECK(p.y == Approx(p.x * p.x - 10 * p.x + 24).margin(1e-9));
+    int roots2 = 0;
+    for (const auto& p : chart.points)
+        if (p.label.rfind("t", 0) == 0) {
+            ++roots2;
+            CHECK(p.p.y == 0);
+            CHECK((p.p.x == Approx(4) || p.p.x == Approx(6)));
+        }
+    CHECK(roots2 == 2);
 }
