@@ -1,4 +1,5 @@
-// Sections: [pieces] [tests] [pair] [spec] [advance] [narrate] [result and render] [draw]
+// Sections: [pieces] [tests] [pair] [spec] [advance] [narrate] [result and render]; the picture is
+// in painters_draw.cpp
 #include "hsr/painters.hpp"
 
 #include <algorithm>
@@ -586,7 +587,9 @@ std::string test_number(Test t) {
     }
 }
 
-std::string cut_text(const Cut& cut) {
+}  // namespace
+
+std::string Painters::cut_text(const Cut& cut) {
     switch (cut.kind) {
         case Cut::Kind::Plane: return "the plane of P" + std::to_string(cut.other);
         case Cut::Kind::Column: return "the grid line x = " + std::to_string(cut.other);
@@ -594,8 +597,6 @@ std::string cut_text(const Cut& cut) {
     }
     return "";
 }
-
-}  // namespace
 
 void Painters::narrate(const State& s, StepInfo& info) {
     info.math.clear();
@@ -756,90 +757,6 @@ Painters::Result Painters::result(const State& s) {
     }
     res.pair_tests = n.pair_tests, res.moves = n.moves, res.splits = n.splits;
     return res;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-void Painters::draw(const State& s, Scene& scene) {
-    const auto& sc = s.in.scene;
-    const int w = static_cast<int>(sc.width), h = static_cast<int>(sc.height);
-    const double W = w, H = h, gap = std::max(1.0, std::round(W / 8));
-
-    // The colour buffer as drawn so far.
-    PixelGrid2 colour;
-    colour.width = w, colour.height = h;
-    colour.rgba.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
-    for (std::size_t a = 0; a < s.ids.size(); ++a)
-        if (s.ids[a] >= 0) colour.rgba[a] = pack_rgba(sc.polygons[static_cast<std::size_t>(s.ids[a])].color);
-    scene.grids.push_back(std::move(colour));
-    scene.polygons.push_back({{{0, 0}, {W, 0}, {W, H}, {0, H}}, {Role::Construction, 1.0f}, true, false});
-    scene.labels.push_back({{W / 2, H + 0.6}, "colour buffer", {Role::Neutral}});
-
-    // Outlines: the input polygons thin (with handles); while ordering, the pieces of the list,
-    // P orange and Q teal; while drawing, the polygon just drawn orange.
-    for (std::size_t k = 0; k < sc.polygons.size(); ++k) {
-        std::vector<dvec2> outline;
-        for (const auto& v : sc.polygons[k].vertices) outline.emplace_back(v.x, v.y);
-        scene.polygons.push_back({outline, {Role::Subject, 1.0f, true}, true, false});
-        for (std::size_t i = 0; i < outline.size(); ++i) {
-            const std::string base = "/polygons/" + std::to_string(k) + "/vertices/" + std::to_string(i);
-            scene.handles.push_back({outline[i], "P" + std::to_string(k) + " vertex " + std::to_string(i),
-                                     base + "/0", base + "/1"});
-        }
-    }
-    const bool ordering = s.last == Phase::Pair || s.last == Phase::Settle || s.last == Phase::Sort;
-    std::string p_name, q_name;
-    if (s.last == Phase::Pair) p_name = s.pair.p, q_name = s.pair.q;
-    if (s.last == Phase::Settle || s.last == Phase::Draw) p_name = s.name;
-    auto outline_of = [](const Piece& p) {
-        std::vector<dvec2> o;
-        for (const auto& v : p.vertices) o.emplace_back(v.x, v.y);
-        return o;
-    };
-    auto show = [&](const Piece& p, Role role, float width) {
-        const auto o = outline_of(p);
-        if (o.empty()) return;
-        scene.polygons.push_back({o, {role, width}, true, false});
-        dvec2 centre(0);
-        for (const auto& v : o) centre += v;
-        scene.labels.push_back({centre / double(o.size()), p.name, {role}});
-    };
-    // After a split, the new pieces are shown as the ones just made (orange).
-    const bool split = s.last == Phase::Pair && s.pair.outcome == Outcome::Split;
-    auto made = [&](const Piece& p) { return split && std::find(s.made.begin(), s.made.end(), p.name) != s.made.end(); };
-    if (ordering)
-        for (const Piece& p : s.list) {
-            const bool hot = p.name == p_name || made(p);
-            show(p, hot ? Role::Active : p.name == q_name ? Role::Entering : Role::Subject,
-                 hot || p.name == q_name ? 3.0f : 1.5f);
-        }
-    for (const Piece& p : s.settled)
-        if (p.name == p_name) show(p, Role::Active, 3.0f);
-        else if (p.name == q_name) show(p, Role::Entering, 3.0f);
-
-    // The list beside the screen, far end on top: settled (drawn ones green), then the list.
-    const double x0 = W + gap;
-    double y = H;
-    scene.labels.push_back({{x0 + 3, y + 0.6}, "far", {Role::Neutral}});
-    for (std::size_t k = 0; k < s.settled.size(); ++k, y -= 1) {
-        const Piece& p = s.settled[k];
-        const Role role = p.name == p_name ? Role::Active : k < s.drawn ? Role::Kept : Role::Neutral;
-        scene.labels.push_back({{x0, y}, p.name + (k < s.drawn ? "  drawn" : "  settled"), {role}});
-    }
-    for (const Piece& p : s.list) {
-        const Role role = p.name == p_name ? Role::Active : p.name == q_name ? Role::Entering : Role::Subject;
-        scene.labels.push_back({{x0, y}, p.name + " z ∈ " + interval(p.lo.z, p.hi.z) + (p.marked ? "  marked" : ""), {role}});
-        y -= 1;
-    }
-    scene.labels.push_back({{x0 + 3, y}, "near", {Role::Neutral}});
-    if (s.last == Phase::Pair) {
-        const std::string k = test_number(s.pair.test);
-        const std::string what = s.pair.outcome == Outcome::Pass ? (k.empty() ? "same polygon" : "test " + k + ": " + test_name(s.pair.test))
-                                 : s.pair.outcome == Outcome::Move ? "test " + k + "′: " + s.pair.q + " moves to the far end"
-                                                                   : "split " + s.split_name + " by " + cut_text(s.split_cut);
-        scene.labels.push_back({{x0, y - 1}, s.pair.p + " vs " + s.pair.q + " — " + what,
-                                {s.pair.outcome == Outcome::Split ? Role::Discarded : Role::Active}});
-    }
 }
 
 }  // namespace cg

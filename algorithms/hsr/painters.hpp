@@ -162,6 +162,7 @@ struct Painters {
 
     static const char* test_name(Test t);  // "x extents", "P behind Q's plane", …
     static std::string test_code(const Decision& d);  // "1" … "6", "same", "move", "split"
+    static std::string cut_text(const Cut& cut);      // "the plane of P1", "the grid line x = 3"
 
 private:
     static void advance(State& s);

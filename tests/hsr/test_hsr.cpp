@@ -175,3 +175,24 @@ TEST_CASE("hsr: Warnock's classification of a polygon against an area", "[hsr]")
     CHECK(Warnock::classify(triangle, 2, 2, 4, 4) == Warnock::Class::Disjoint);  // the hypotenuse separates
     CHECK(Warnock::classify(triangle, 1, 1, 4, 4) == Warnock::Class::Intersecting);
 }
+
+TEST_CASE("z-buffer: the picture — the colour buffer in the world, the depth buffer an image beside it",
+          "[hsr][z-buffer]") {
+    const ScreenScene sc{4, 4, {flat_rect(0, 0, 3, 3, 5), flat_rect(1, 1, 4, 4, 2)}};
+    auto s = ZBuffer::start({sc, ZBuffer::Granularity::Pixel});
+    while (!ZBuffer::done(s) && s.last != ZBuffer::Phase::Pixel) ZBuffer::step(s, nullptr);
+    cg::Scene pic;
+    ZBuffer::draw(s, pic);
+    REQUIRE(pic.grids.size() == 1);  // the colour buffer, in screen pixels
+    REQUIRE(pic.panels.size() == 1);
+    const cg::Panel& depth = pic.panels[0];
+    CHECK(depth.kind == cg::PanelKind::Image);
+    REQUIRE(depth.grids.size() == 1);
+    CHECK(depth.grids[0].width == 4);
+    CHECK(depth.grids[0].height == 4);
+    // The first pixel compared was written: the depth panel says what the buffer held and holds.
+    REQUIRE(depth.points.size() == 1);
+    CHECK(depth.points[0].label == "∞ → 5");
+    CHECK(depth.points[0].style.role == cg::Role::Kept);
+    CHECK(depth.grids[0].rgba[static_cast<std::size_t>(s.pj * 4 + s.pi)] != 0);
+}

@@ -285,3 +285,26 @@ TEST_CASE("painters: pair tests grow like n squared (the complexity table)", "[h
     CHECK(rows[2].painter_pair_tests > 8 * rows[1].painter_pair_tests);
     CHECK_THAT(complexity_table(rows), Catch::Contains("pair tests"));
 }
+
+TEST_CASE("painters: the picture — the list as a chart of z extents in drawing order", "[painters]") {
+    const ScreenScene sc{4, 4, {rect(0, 0, 3, 3, 5), rect(1, 1, 4, 4, 2)}};
+    auto s = Painters::start({sc});
+    cg::Scene before;
+    Painters::draw(s, before);
+    REQUIRE(before.panels.size() == 1);
+    CHECK(before.panels[0].kind == cg::PanelKind::Chart);
+    CHECK(before.panels[0].polygons.size() == 2);  // a bar per input polygon
+    const auto r = cg::run_to_end<Painters>(Painters::start({sc}));
+    auto end = Painters::start({sc});
+    while (!Painters::done(end)) Painters::step(end, nullptr);
+    cg::Scene pic;
+    Painters::draw(end, pic);
+    REQUIRE(pic.panels.size() == 1);
+    const cg::Panel& chart = pic.panels[0];
+    REQUIRE(chart.polygons.size() == r.order.size());
+    // Drawn back to front: the first bar is P0's z extent [5, 5], drawn (green).
+    CHECK(chart.polygons[0].style.role == cg::Role::Kept);
+    CHECK(chart.polygons[0].points[0].y == 5);
+    REQUIRE_FALSE(chart.labels.empty());
+    CHECK(chart.labels[0].text == "P0");
+}
