@@ -530,15 +530,25 @@ void WindowViewport::draw(const State& s, Scene& scene) {
     scene.labels.push_back(
         {{(ndc_lo.x + ndc_hi.x) / 2, ndc_hi.y}, "NDC [−1, 1] × [−1, 1]", {Role::Neutral}});
     const bool flipped = flipped_x(v) || flipped_y(v);
+    // A flipped viewport's caption says which way the device counts; the device's own
+    // coordinates stand at the two corners the window's corners reach.
     const std::string vp_caption =
-        flipped ? std::string("viewport (device, ") + (flipped_y(v) ? "y down" : "x flipped") +
-                      "): window corners → " + num(dvec2(v.xmin, v.ymin)) + ", " +
-                      num(dvec2(v.xmax, v.ymax))
+        flipped ? std::string("viewport (device, ") +
+                      (flipped_x(v) && flipped_y(v) ? "x and y flipped"
+                       : flipped_y(v)               ? "y down"
+                                                    : "x flipped") +
+                      ")"
                 : "viewport (device) " + range(v);
     scene.labels.push_back({{(vp_lo.x + vp_hi.x) / 2, vp_hi.y}, vp_caption, {Role::Window}});
-    if (flipped)  // the device's own coordinates at the two corners the window's corners reach
-        for (const dvec2 c : {dvec2(v.xmin, v.ymin), dvec2(v.xmax, v.ymax)})
+    const int n_points = static_cast<int>(s.in->points.size());
+    const bool to_device_now = s.last == Phase::ToDevice && s.phase != Phase::Done &&
+                               s.k >= 0 && s.k < static_cast<int>(s.device.size());
+    if (flipped)
+        for (const dvec2 c : {dvec2(v.xmin, v.ymin), dvec2(v.xmax, v.ymax)}) {
+            // Not when the point just mapped lands there: its own label says the same.
+            if (to_device_now && s.k < n_points && s.device[s.k] == c) continue;
             scene.labels.push_back({device_at(c), num(c), {Role::Neutral}});
+        }
     if (s.phase != Phase::Aspect && s.distorted)
         scene.labels.push_back({{(vp_lo.x + vp_hi.x) / 2, vp_lo.y},
                                 "distorted: aspect " + num(s.aspect_window, 4) + " ≠ " +
