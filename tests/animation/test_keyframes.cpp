@@ -533,10 +533,19 @@ TEST_CASE("keyframes: the picture shows the jumps and the spacing", "[animation]
         for (int k = 0; k < 5; ++k) Keyframes::step(s, nullptr);
         cg::Scene scene;
         Keyframes::draw(s, scene);
+        // Two charts against t (s): the value with its keys and the frame's dot, the velocity.
+        REQUIRE(scene.panels.size() == 2);
+        CHECK_FALSE(scene.has_2d());  // nothing on the world's grid
+        const cg::Panel& value = scene.panels[0];
+        const cg::Panel& velocity = scene.panels[1];
+        CHECK(value.kind == cg::PanelKind::Chart);
+        CHECK(value.x.label == "t (s)");
+        CHECK(velocity.x.label == "t (s)");
+        CHECK(value.points.size() >= in.keys.size() + 1);
+        CHECK(value.legend.front().style.role == cg::Role::Active);  // the chosen curve first
+        CHECK(velocity.legend.size() == value.legend.size());
         int n = 0;
-        for (const auto& seg : scene.segments) n += seg.label == "jump";
-        CHECK(scene.has_2d());
-        CHECK(scene.points.size() >= in.keys.size() + 1);
+        for (const auto& seg : velocity.segments) n += seg.label == "jump";
         return n;
     };
     const Input cr = scalar({{0, 0}, {1, 2}, {2, 6}, {3, 4}}, Interp::CatmullRom);
@@ -554,5 +563,12 @@ TEST_CASE("keyframes: the picture shows the jumps and the spacing", "[animation]
     Keyframes::draw(s, scene);
     int green = 0;
     for (const auto& pt : scene.points) green += pt.style.role == cg::Role::Kept;
-    CHECK(green == 11);  // 10 frames so far plus the current point
+    CHECK(green == 11);  // 10 frames so far plus the current point, in the world
+    // The speed against time in a chart from 0, with the constant speed L/T.
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& speed = scene.panels[0];
+    CHECK(speed.kind == cg::PanelKind::Chart);
+    CHECK(speed.y.include_zero);
+    REQUIRE(speed.legend.size() == 2);
+    CHECK(speed.legend[1].style.role == cg::Role::Kept);
 }
