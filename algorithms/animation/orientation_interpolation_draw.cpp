@@ -3,8 +3,9 @@
 // triad from the fan's centre, the path of the x axis's tip (evenly spaced dots mean an even
 // speed; the matrix blend's dips inside the unit circle), the keys' triads faint, and the
 // current frame as a small house turned (or, for the matrix blend, sheared) by it.
-// 2D beside it: the angular speed of Euler, slerp and squad against time, and below it the
-// matrix blend's det M(t) with det = 1 dashed.
+// The fans are seen from the front and a little above, framed whole. Beside them two charts
+// against t (s): the angular speed (°/s) of Euler, slerp and squad, and the matrix blend's
+// det M(t) with det = 1 dashed.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -109,57 +110,47 @@ void OrientationInterpolation::draw(const State& s, Scene& scene) {
         for (std::size_t f = first; f < scene.faces3.size(); ++f)
             for (dvec3& p : scene.faces3[f].points) p += c;
     }
-    if (nf > 0) {
-        const Frame& f = s.frames.back();
-        scene.labels3.push_back({centre(1) + dvec3(-0.9, -1.3, 0),
-                                 "det " + num(f.det, 3) + ", |MᵀM − I| " + num(f.orth_error, 2),
-                                 {Role::Discarded}});
-    }
+    // The fans side by side, seen from the front and a little above: a circle stays nearly
+    // round, the triads keep their depth, and no fan hides another.
+    scene.view3 = {glm::normalize(dvec3(-0.15, -0.35, -1)), {0, 1, 0}, false};
+    add_focus(scene, centre(0) - dvec3(1.2, 1.2, 1.2), centre(fans - 1) + dvec3(1.2, 1.5, 1.2));
 
-    // 2D, upper: angular speed against t for the whole run's time span (a fixed frame).
-    const double pw = 6, ph = 4, py = 2.6;
+    // Chart: the angular speed against t over the whole run (t and the top fixed while the
+    // keys' own speeds bound it, so the chart stays put).
     const double T = in.segment_time * segments(in);
-    double top = 1e-9;
+    double top = 0;
     for (double w : s.p.omega_deg) top = std::max(top, 2 * w / in.segment_time);
     for (const Frame& f : s.frames)
         top = std::max({top, f.speed_euler, f.speed_slerp, f.speed_squad});
-    top *= 1.15;
-    scene.polygons.push_back(
-        {{{0, py}, {pw, py}, {pw, py + ph}, {0, py + ph}}, {Role::Construction, 1.0f}});
-    scene.labels.push_back(
-        {{0, py + ph + 0.35}, "angular speed, top " + num(top, 4) + "°/s", {Role::Neutral}});
-    scene.labels.push_back({{0, py + ph + 0.9}, kMethods[0].name, {kMethods[0].role}});
-    scene.labels.push_back({{2.2, py + ph + 0.9}, kMethods[2].name, {kMethods[2].role}});
-    if (squad) scene.labels.push_back({{3.4, py + ph + 0.9}, kMethods[3].name, {kMethods[3].role}});
-    const std::size_t pstride = std::max<std::size_t>(1, (nf + kMaxPlotPoints - 1) / kMaxPlotPoints);
+    // (No titles: the y axes say what is plotted, and the room goes to the plots.)
+    // (Before the keys are read there is no speed yet: 0 to 1.)
+    Panel& speed = add_chart(scene, "", Axis{"t (s)", 0, T},
+                             Axis{"angular speed ω (°/s)", 0, top > 1e-6 ? 1.1 * top : 1.0});
+    const std::size_t pstride =
+        std::max<std::size_t>(1, (nf + kMaxPlotPoints - 1) / kMaxPlotPoints);
     for (int which : {0, 2, 3}) {
         if (which == 3 && !squad) continue;
-        Polygon2 line{{}, {kMethods[which].role, 2.0f}, false, false};
+        std::vector<dvec2> line;
         for (std::size_t k = 1; k < nf; k += pstride)
-            line.points.push_back(
-                {pw * s.frames[k].t / T, py + ph * speed_of(s.frames[k], which) / top});
+            line.push_back({s.frames[k].t, speed_of(s.frames[k], which)});
         if (nf > 1 && (nf - 2) % pstride != 0)
-            line.points.push_back(
-                {pw * s.frames.back().t / T, py + ph * speed_of(s.frames.back(), which) / top});
-        if (line.points.size() == 1) line.points.push_back(line.points[0] + dvec2(0.01, 0));
-        if (!line.points.empty()) scene.polygons.push_back(std::move(line));
+            line.push_back({s.frames.back().t, speed_of(s.frames.back(), which)});
+        add_line(speed, std::move(line), {kMethods[which].role, 2.0f}, kMethods[which].name);
     }
-    // 2D, lower: det M(t) of the matrix blend, 0 to 1.
-    const double dh = 1.6;
-    scene.polygons.push_back({{{0, 0}, {pw, 0}, {pw, dh}, {0, dh}}, {Role::Construction, 1.0f}});
-    scene.segments.push_back({{0, dh}, {pw, dh}, "", {Role::Window, 1.0f, true}, false});
-    scene.labels.push_back({{pw + 0.15, dh}, "det = 1", {Role::Window}});
-    scene.labels.push_back({{pw + 0.15, 0}, "0", {Role::Neutral}});
-    Polygon2 det{{}, {Role::Discarded, 2.0f}, false, false};
-    for (std::size_t k = 0; k < nf; k += pstride)
-        det.points.push_back({pw * s.frames[k].t / T, dh * std::clamp(s.frames[k].det, -0.2, 1.2)});
-    if (nf > 0 && (nf - 1) % pstride != 0)
-        det.points.push_back({pw * s.frames.back().t / T, dh * std::clamp(s.frames.back().det, -0.2, 1.2)});
-    if (det.points.size() == 1) det.points.push_back(det.points[0] + dvec2(0.01, 0));
-    if (!det.points.empty()) scene.polygons.push_back(std::move(det));
-    scene.labels.push_back({{0, dh + 0.3}, "det M(t), matrix lerp", {Role::Discarded}});
-    scene.labels.push_back({{0, -0.35}, "t = 0", {Role::Neutral}});
-    scene.labels.push_back({{pw - 1, -0.35}, "t = " + num(T, 4) + " s", {Role::Neutral}});
+
+    // Chart: det M(t) of the matrix blend, against det = 1 (a rotation).
+    double det_lo = 0;
+    for (const Frame& f : s.frames) det_lo = std::min(det_lo, f.det);
+    Panel& det = add_chart(scene, "", Axis{"t (s)", 0, T},
+                           Axis{nf > 0 ? "matrix lerp: det M = " + num(s.frames.back().det, 3)
+                                       : std::string("matrix lerp: det M(t)"),
+                                det_lo, 1.15});
+    add_line(det, {{0, 1}, {T, 1}}, {Role::Window, 1.0f, true}, "det = 1: a rotation");
+    std::vector<dvec2> dets;
+    for (std::size_t k = 0; k < nf; k += pstride) dets.push_back({s.frames[k].t, s.frames[k].det});
+    if (nf > 0 && (nf - 1) % pstride != 0) dets.push_back({s.frames.back().t, s.frames.back().det});
+    add_line(det, std::move(dets), {Role::Discarded, 2.0f}, "det M(t)");
+    if (nf > 0) det.points.push_back({{s.frames.back().t, s.frames.back().det}, "", {Role::Discarded}, 4.5f});
 }
 
 }  // namespace cg

@@ -647,7 +647,7 @@ TEST_CASE("orientation-interpolation: exam problems answered by hand",
     CHECK(same_keys > 5);
 }
 
-TEST_CASE("orientation-interpolation: the picture, four fans in 3D and the speed plot in 2D",
+TEST_CASE("orientation-interpolation: the picture, four fans in 3D, the speed and det charts",
           "[animation][orientation-interpolation]") {
     Input in;
     in.keys = {axis_key({0, 0, 1}, 0), axis_key({1, 0, 0}, 90), axis_key({0, 1, 0}, 120)};
@@ -660,7 +660,19 @@ TEST_CASE("orientation-interpolation: the picture, four fans in 3D and the speed
     REQUIRE(s.frames.size() == 5);
     cg::Scene scene;
     OI::draw(s, scene);
-    CHECK(scene.has_2d());
+    CHECK_FALSE(scene.has_2d());  // nothing on the world's grid
+    REQUIRE(scene.panels.size() == 2);
+    const cg::Panel& speed = scene.panels[0];
+    const cg::Panel& det = scene.panels[1];
+    CHECK(speed.kind == cg::PanelKind::Chart);
+    CHECK(speed.x.label == "t (s)");
+    CHECK(speed.y.lo == 0);
+    REQUIRE(speed.legend.size() == 3);  // Euler, slerp, squad
+    CHECK(speed.legend[2].text == "squad");
+    CHECK(speed.polygons[2].points.size() == 4);  // frames 1..4 have a speed
+    CHECK(det.legend.size() == 2);  // det = 1 and det M(t)
+    CHECK(det.polygons.back().points.size() == 5);
+    CHECK(scene.focus3.size() == 1);
     CHECK(scene.faces3.size() >= 4 * 5);  // a house a fan
     int labels = 0;
     for (const auto& l : scene.labels3) labels += l.text == "squad" || l.text == "slerp";
