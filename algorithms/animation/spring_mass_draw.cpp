@@ -1,9 +1,11 @@
 // Spring-mass, the picture. 3D: the springs coloured by strain (|d| − L)/L (blue compressed,
 // grey at rest, red stretched, full colour at ±20%), the masses (pinned ones in the window's
 // blue, the watched one orange), the forces on the watched mass as arrows (each spring, gravity,
-// drag, and the total dashed; all scaled together), and the watched mass's path so far.
-// 2D beside it: the total energy against time over the whole run, with E_0 dashed, so explicit
-// Euler's climb and symplectic Euler's bounded wobble show at a glance.
+// drag, and the total dashed; all scaled together), and the watched mass's path so far. The
+// camera is framed on the masses as they are now (and the arrows); a system that stays in the
+// plane z = 0 is seen face-on. Beside it, a chart of the total energy E (J) against t (s) over
+// the whole run, with E_0 dashed; its range is at least E_0 ± E_scale (from 0 for a positive
+// E_0), so a wobble of a few per cent looks like one, and explicit Euler's climb and symplectic Euler's bounded wobble show at a glance.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -43,7 +45,13 @@ void SpringMass::draw(const State& s, Scene& scene) {
     double size = glm::length(hi - lo);
     for (const Spring& sp : in.springs) size = std::max(size, sp.rest);
     if (!(size > 0)) size = 1;
-    scene.extent3 = 0.5 * glm::length(hi + lo) + 0.9 * size;
+    // Where the masses are now: the arrows are scaled to it (a system that blew up is large).
+    glm::dvec3 now_lo = s.x[0], now_hi = now_lo;
+    for (const glm::dvec3& x : s.x) now_lo = glm::min(now_lo, x), now_hi = glm::max(now_hi, x);
+    const double now_size = std::max(size, glm::length(now_hi - now_lo));
+    // In the plane z = 0 for ever: no z in the positions, the velocities or gravity.
+    bool planar = in.gravity.z == 0;
+    for (const Mass& m : in.masses) planar = planar && m.position.z == 0 && m.velocity.z == 0;
 
     for (const Spring& sp : in.springs) {
         const glm::dvec3 a = s.x[std::size_t(sp.i)], b = s.x[std::size_t(sp.j)];
@@ -96,49 +104,69 @@ void SpringMass::draw(const State& s, Scene& scene) {
                      s.v[std::size_t(sp.j)], h, d);
         const glm::dvec3 f = sp.i == int(w) ? h + d : -(h + d);
         total += f;
-        if (arrows.size() < 8) arrows.push_back({f, "spring", Role::Entering, false});
+        if (arrows.size() < 8) arrows.push_back({f, "", Role::Entering, false});
     }
+    // One label for the springs' arrows: "spring", or "springs" on the first of several.
+    std::size_t springs = 0;
+    for (const Arrow& a : arrows) springs += a.role == Role::Entering;
+    for (Arrow& a : arrows)
+        if (a.role == Role::Entering) {
+            a.label = springs > 1 ? "springs" : "spring";
+            break;
+        }
     arrows.push_back({total, "F", Role::Active, true});
     double biggest = 0;
     for (const Arrow& a : arrows) biggest = std::max(biggest, glm::length(a.f));
     if (biggest > 0 && std::isfinite(biggest)) {
-        const double scale = 0.4 * size / biggest;
+        const double scale = 0.4 * now_size / biggest;
         for (const Arrow& a : arrows) {
             if (glm::length(a.f) == 0) continue;
-            scene.segments3.push_back(
-                {s.x[w], s.x[w] + scale * a.f, a.label, {a.role, 2.0f, a.dashed}, true});
+            const glm::dvec3 tip = s.x[w] + scale * a.f;
+            scene.segments3.push_back({s.x[w], tip, a.label, {a.role, 2.0f, a.dashed}, true});
+            now_lo = glm::min(now_lo, tip), now_hi = glm::max(now_hi, tip);
         }
     }
 
-    // 2D: total energy against t over the whole run (a fixed frame: the layout stays put).
-    const double pw = 5, ph = 6;  // about square: the 2D pane beside the 3D one is narrow
-    scene.polygons.push_back({{{0, 0}, {pw, 0}, {pw, ph}, {0, ph}}, {Role::Construction, 1.0f}});
-    double e_lo = s.history.front(), e_hi = e_lo;
-    for (double e : s.history) e_lo = std::min(e_lo, e), e_hi = std::max(e_hi, e);
-    const double min_e = e_lo, max_e = e_hi;
-    const double pad = std::max(0.05 * (e_hi - e_lo), 1e-3 * s.energy_scale);
-    e_lo -= pad;
-    e_hi += pad;
-    auto y_of = [&](double e) { return ph * (e - e_lo) / (e_hi - e_lo); };
-    const double steps = double(in.steps);
-    Polygon2 line{{}, {Role::Active, 2.0f}, false, false};
+    // The camera frames the region the system starts in, with room for its motion, and the
+    // masses as they are now with the arrows on the watched one (a run that blows up is seen
+    // whole, at its size).
+    const glm::dvec3 centre = (lo + hi) / 2.0;
+    const double room = 0.5 * glm::length(hi - lo) + 0.5 * size;
+    add_focus(scene, glm::min(now_lo, centre - glm::dvec3(room)),
+              glm::max(now_hi, centre + glm::dvec3(room)));
+    if (planar) scene.view3 = {{0, 0, -1}, {0, 1, 0}, true};
+
+    // The total energy against t over the whole run. t spans the run; E spans at least
+    // E_0 ± E_scale (E_scale = max(|E_0|, K_0 + S_0 + |G_0|), so from 0 for a positive E_0),
+    // so a drift is seen as the fraction of E_scale the narration gives, never blown up to fill
+    // the chart; a run that leaves that range widens it.
+    const double t_end = double(in.steps) * in.dt;
+    const double e0 = s.history.front();
+    double e_lo = e0 - s.energy_scale, e_hi = e0 + s.energy_scale;
+    double h_lo = e_lo, h_hi = e_hi;
+    for (double e : s.history)
+        if (std::isfinite(e)) h_lo = std::min(h_lo, e), h_hi = std::max(h_hi, e);
+    const double pad = 0.05 * (h_hi - h_lo);
+    if (h_lo < e_lo) e_lo = h_lo - pad;
+    if (h_hi > e_hi) e_hi = h_hi + pad;
+    Panel& chart = add_chart(scene,
+                             s.blew_up ? "total energy E(t): blew up at t = " +
+                                             num(double(s.k) * in.dt, 4) + " s"
+                                       : "total energy E(t) = " + num(s.history.back(), 4) + " J",
+                             Axis{"t (s)", 0, t_end}, Axis{"E (J)", e_lo, e_hi});
+    std::vector<glm::dvec2> line;
     const std::size_t stride = (s.history.size() + kMaxPlotPoints - 1) / kMaxPlotPoints;
     for (std::size_t q = 0; q < s.history.size(); q += stride)
-        line.points.push_back({pw * double(q) / steps, y_of(s.history[q])});
+        line.push_back({double(q) * in.dt, s.history[q]});
     if ((s.history.size() - 1) % stride != 0)
-        line.points.push_back({pw * double(s.history.size() - 1) / steps, y_of(s.history.back())});
-    if (line.points.size() == 1) line.points.push_back(line.points[0] + glm::dvec2(0.01, 0));
-    scene.polygons.push_back(std::move(line));
-    const double y0 = y_of(s.history.front());
-    scene.segments.push_back({{0, y0}, {pw, y0}, "E_0", {Role::Window, 1.0f, true}, false});
-    scene.labels.push_back(
-        {{0, ph + 0.4},
-         "total energy E(t) = " + num(s.history.back(), 5) + (s.blew_up ? "  (blew up)" : ""),
-         {s.blew_up ? Role::Discarded : Role::Neutral}});
-    scene.labels.push_back({{0, -0.4}, "t = 0", {Role::Neutral}});
-    scene.labels.push_back({{pw - 1, -0.4}, "t = " + num(steps * in.dt, 4), {Role::Neutral}});
-    scene.labels.push_back({{pw + 0.2, y_of(max_e)}, "max " + num(max_e, 4), {Role::Neutral}});
-    scene.labels.push_back({{pw + 0.2, y_of(min_e)}, "min " + num(min_e, 4), {Role::Neutral}});
+        line.push_back({double(s.history.size() - 1) * in.dt, s.history.back()});
+    add_line(chart, {{0, s.history.front()}, {t_end, s.history.front()}},
+             {Role::Window, 1.0f, true}, "E_0 = " + num(s.history.front(), 4) + " J");
+    add_line(chart, std::move(line), {s.blew_up ? Role::Discarded : Role::Active, 2.0f}, "E(t)");
+    chart.points.push_back({{double(s.history.size() - 1) * in.dt, s.history.back()},
+                            "",
+                            {s.blew_up ? Role::Discarded : Role::Active},
+                            5.0f});
 }
 
 }  // namespace cg

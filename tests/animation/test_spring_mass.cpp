@@ -9,6 +9,7 @@
 // against a hand computation; the narration of the first step; the picture.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <glm/vector_relational.hpp>
 
 #include "animation/spring_mass.hpp"
 #include "core/rng.hpp"
@@ -510,7 +511,7 @@ TEST_CASE("spring-mass: exam problems are one explicit Euler step, answered by h
     CHECK(rest > 10);
 }
 
-TEST_CASE("spring-mass: the picture, masses and springs in 3D, the energy plot in 2D",
+TEST_CASE("spring-mass: the picture, masses and springs in 3D, the energy in a chart",
           "[animation][spring-mass]") {
     const auto& cloth = lesson().presets[5];
     REQUIRE(cloth.name.find("cloth") != std::string::npos);
@@ -521,7 +522,23 @@ TEST_CASE("spring-mass: the picture, masses and springs in 3D, the energy plot i
     SpringMass::draw(s, scene);
     CHECK(scene.points3.size() == 64);
     CHECK(scene.segments3.size() >= in.springs.size() + 3);  // springs, the path, the forces
-    CHECK(scene.has_2d());
+    // The energy against time: a chart in J and s, with E_0, its range at least E_0 ± E_scale.
+    CHECK_FALSE(scene.has_2d());  // nothing on the world's grid
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& energy = scene.panels[0];
+    CHECK(energy.kind == cg::PanelKind::Chart);
+    CHECK(energy.x.label == "t (s)");
+    CHECK(energy.y.label == "E (J)");
+    CHECK(energy.y.lo <= s.history.front() - s.energy_scale);
+    CHECK(energy.y.hi >= s.history.front() + s.energy_scale);
+    REQUIRE(energy.legend.size() == 2);  // E_0 and E(t)
+    CHECK(energy.polygons.back().points.size() == s.history.size());
+    // The camera frames the masses as they are now.
+    REQUIRE(scene.focus3.size() == 1);
+    for (const glm::dvec3& x : s.x) {
+        CHECK(glm::all(glm::lessThanEqual(scene.focus3[0].lo, x)));
+        CHECK(glm::all(glm::lessThanEqual(x, scene.focus3[0].hi)));
+    }
     int arrows = 0;
     for (const auto& seg : scene.segments3) arrows += seg.arrow;
     CHECK(arrows >= 3);  // gravity, two springs at the corner and more, the total
@@ -530,5 +547,7 @@ TEST_CASE("spring-mass: the picture, masses and springs in 3D, the energy plot i
     cg::Scene s1;
     SpringMass::draw(SpringMass::start(one), s1);
     REQUIRE(!s1.segments3.empty());
+    CHECK(s1.view3.orthographic);  // in the plane z = 0: seen face-on
+    CHECK(!scene.view3.orthographic);  // the cloth falls in 3D
     CHECK((s1.segments3[0].style.rgba >> 24) > ((s1.segments3[0].style.rgba >> 8) & 0xFF));
 }
