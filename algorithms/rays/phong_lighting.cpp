@@ -1,4 +1,5 @@
-// Sections: [helpers] [spec] [validate] [the model's terms] [advance] [narrate] [draw]
+// Sections: [helpers] [spec] [validate] [the model's terms] [advance] [narrate]; the picture is
+// in phong_lighting_draw.cpp.
 #include "rays/phong_lighting.hpp"
 
 #include <algorithm>
@@ -12,7 +13,6 @@ namespace cg {
 
 namespace {
 
-using glm::dvec2;
 using glm::dvec3;
 using Color = PhongLighting::Color;
 using Phase = PhongLighting::Phase;
@@ -522,101 +522,6 @@ void PhongLighting::narrate(const State& s, StepInfo& info) {
             break;
     }
     fill_vars(s, info);
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// 3D: the point on a small patch of its tangent plane, n, v and the eye, every light (a point
-// light where it is, a directional one as incoming rays), and for the light in hand l and the
-// vector the model compares (r with v, or h with n). 2D: cos^p θ against θ in degrees for the
-// material's p and for p/4 and 4p, the half-width where it falls to 1/2, and this light's angle.
-void PhongLighting::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const dvec3 P = in.point;
-    const double size = std::max(1.0, 0.5 * glm::length(in.eye - P));
-    const dvec3 n = unit_of(in.normal);
-    dvec3 t1 = glm::cross(n, std::fabs(n.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0));
-    t1 = unit_of(t1);
-    const dvec3 t2 = glm::cross(n, t1);
-    const double w = 0.6 * size;
-    scene.faces3.push_back(
-        {{P - w * t1 - w * t2, P + w * t1 - w * t2, P + w * t1 + w * t2, P - w * t1 + w * t2},
-         {Role::Subject, 1.0f},
-         0.3f,
-         true,
-         false});
-    scene.points3.push_back({P, "P", {Role::Subject}, 6.0f});
-    scene.points3.push_back({in.eye, "eye", {Role::Neutral}, 5.0f});
-    scene.segments3.push_back({P, P + size * n, "n", {Role::Neutral, 2.0f}, true});
-    const dvec3 v = unit_of(in.eye - P);
-    scene.segments3.push_back({P, P + size * v, "v", {Role::Window, 2.0f}, true});
-    scene.segments3.push_back({P, in.eye, "", {Role::Construction, 1.0f, true}, false});
-    for (int i = 0; i < static_cast<int>(in.lights.size()); ++i) {
-        const Light& L = in.lights[i];
-        const bool current = i == s.k && s.phase != Phase::Done;
-        const Role role = current ? Role::Active : Role::Construction;
-        if (L.directional) {
-            const dvec3 d = unit_of(L.direction);
-            const dvec3 from = P - 1.8 * size * d;
-            scene.segments3.push_back({from,
-                                       from + 0.8 * size * d,
-                                       light_name(i) + " (directional)",
-                                       {role, 1.5f},
-                                       true});
-        } else {
-            scene.points3.push_back({L.position, light_name(i), {role}, 7.0f});
-            scene.segments3.push_back({L.position, P, "", {role, 1.0f, true}, false});
-        }
-    }
-    if (s.k >= 0 && s.k < static_cast<int>(s.out.lights.size())) {
-        const LightTerms& t = s.out.lights[s.k];
-        scene.segments3.push_back({P, P + size * t.l, "l", {Role::Active, 2.5f}, true});
-        if (s.last == Phase::Specular || (s.phase == Phase::Done && s.k >= 0) ||
-            s.phase == Phase::LightDir) {
-            if (in.model == Model::Phong)
-                scene.segments3.push_back({P, P + size * t.r, "r", {Role::Kept, 2.5f}, true});
-            else if (t.h != dvec3(0.0))
-                scene.segments3.push_back({P, P + size * t.h, "h", {Role::Kept, 2.5f}, true});
-        }
-    }
-    scene.extent3 = 1.5 * size;
-
-    // 2D: the highlight's shape. x = θ/90° so the plot is as wide as it is tall.
-    const double p = in.material.shininess;
-    auto curve = [&](double pp, Role role, float width, const std::string& label) {
-        std::vector<dvec2> pts;
-        for (int i = 0; i <= 90; ++i) {
-            const double deg = -90.0 + 2.0 * i, c = std::cos(deg * 3.141592653589793 / 180);
-            pts.push_back({deg / 90, std::pow(std::max(c, 0.0), pp)});
-        }
-        scene.polygons.push_back({pts, {role, width}, false, false});
-        // Half-width: cos^p θ = 1/2 at θ = acos(2^(−1/p)).
-        if (pp > 0) {
-            const double half = std::acos(std::pow(0.5, 1 / pp)) * 180 / 3.141592653589793;
-            scene.labels.push_back(
-                {{half / 90, 0.5}, label + ": half-width " + num(half, 3) + "°", {role}});
-        }
-    };
-    scene.segments.push_back({{-1.05, 0}, {1.1, 0}, "θ", {Role::Neutral, 1.0f}, true});
-    scene.segments.push_back({{0, 0}, {0, 1.15}, "", {Role::Neutral, 1.0f}, true});
-    scene.labels.push_back(
-        {{-1, 1.15}, "cos^p θ: the highlight's fall-off (θ from 0 to ±90°)", {Role::Neutral}});
-    scene.labels.push_back({{-1, -0.08}, "−90°", {Role::Neutral}});
-    scene.labels.push_back({{1, -0.08}, "90°", {Role::Neutral}});
-    if (p > 0) curve(p / 4, Role::Construction, 1.0f, "p = " + num(p / 4, 3));
-    curve(4 * std::max(p, 0.25), Role::Construction, 1.0f, "p = " + num(4 * std::max(p, 0.25), 3));
-    curve(p, Role::Active, 2.5f, "p = " + num(p, 3));
-    if (s.k >= 0 && s.k < static_cast<int>(s.out.lights.size()) &&
-        (s.last == Phase::Specular || s.phase == Phase::Done) && s.out.lights[s.k].n_dot_l > 0) {
-        const LightTerms& t = s.out.lights[s.k];
-        const double c = in.model == Model::Phong ? t.r_dot_v : t.n_dot_h;
-        const double deg = std::acos(std::clamp(c, -1.0, 1.0)) * 180 / 3.141592653589793;
-        if (deg <= 90)
-            scene.points.push_back({{deg / 90, std::pow(std::max(c, 0.0), p)},
-                                    light_name(s.k) + ": θ = " + num(deg, 3) + "°",
-                                    {Role::Kept},
-                                    6.0f});
-    }
 }
 
 }  // namespace cg

@@ -354,17 +354,30 @@ TEST_CASE("phong-lighting: traces are deterministic and the picture shows the ve
     cg::Scene scene;
     run->draw(scene);
     CHECK(scene.has_3d());
-    CHECK(scene.has_2d());
+    CHECK_FALSE(scene.has_2d());  // the highlight's fall-off is a chart, not in the world
     std::set<std::string> arrows;
     for (const auto& seg : scene.segments3)
-        if (seg.arrow) arrows.insert(seg.label);
+        if (seg.arrow) {
+            arrows.insert(seg.label);
+            if (seg.label.size() == 1) CHECK(seg.min_pixels >= 30);  // n, v, l, h
+        }
     CHECK(arrows == std::set<std::string>{"n", "v", "l", "h"});
-    REQUIRE(scene.polygons.size() == 3);  // cos^p for p/4, 4p and p
-    CHECK(scene.polygons.back().style.role == cg::Role::Active);
+    CHECK(scene.focus3.size() == 1);
+    // n, l and v lie in the plane y = 0: seen face-on, orthographic.
+    CHECK(scene.view3.orthographic);
+    CHECK(std::fabs(scene.view3.look.y) == Approx(1));
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& chart = scene.panels[0];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.x.label == "θ (°)");
+    REQUIRE(chart.polygons.size() == 3);  // cos^p for p/4, 4p and p
+    CHECK(chart.polygons.back().style.role == cg::Role::Active);
+    REQUIRE(chart.legend.size() == 3);
+    CHECK(chart.legend.back().text == "p = 20");
     bool half_width = false;
-    for (const auto& l : scene.labels)
-        half_width = half_width || l.text == "p = 20: half-width 15°";  // acos(2^(−1/20))
+    for (const auto& seg : chart.segments)
+        half_width = half_width || seg.label == "half-width 15°";  // acos(2^(−1/20))
     CHECK(half_width);
-    REQUIRE(scene.points.size() == 1);  // this light's angle on the curve
-    CHECK(scene.points[0].p.y == Approx(std::pow(0.9, 10)));
+    REQUIRE(chart.points.size() == 1);  // this light's angle on the curve
+    CHECK(chart.points[0].p.y == Approx(std::pow(0.9, 10)));
 }
