@@ -1,4 +1,5 @@
-// Sections: [helpers] [geometry] [spec] [validate] [advance] [narrate] [result and render] [draw]
+// Sections: [helpers] [geometry] [spec] [validate] [advance] [narrate] [result and render]
+// (the picture: shadow_map_draw.cpp)
 #include "shadows/shadow_map.hpp"
 
 #include <algorithm>
@@ -36,9 +37,6 @@ enum Line {
     kLineSummary
 };
 
-bool finite3(const dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 std::vector<double> vec3(const dvec3& v) {
     return {v.x, v.y, v.z};
 }
@@ -88,21 +86,6 @@ bool hit(const ShadowMap::Triangle& tri, const dvec3& o, const dvec3& d, double&
     if (!(v >= 0 && u + v <= 1)) return false;
     t = glm::dot(e2, qv) * inv;
     return std::isfinite(t);
-}
-
-// The light ray through texel (i, j)'s centre: a parallel ray from the light's plane
-// (directional) or a ray from the light's position (spot) with d · f = 1, so that its t is the
-// depth along f in both cases.
-void texel_ray(const Frame& f, int n, int i, int j, dvec3& o, dvec3& d) {
-    const double x = (2.0 * (i + 0.5) / n - 1.0) * f.half;
-    const double y = (2.0 * (j + 0.5) / n - 1.0) * f.half;
-    if (f.perspective) {
-        o = f.origin;
-        d = f.forward + x * f.right + y * f.up;
-    } else {
-        o = f.origin + x * f.right + y * f.up;
-        d = f.forward;
-    }
 }
 
 // Whether triangle b lies in triangle a's plane (the same surface, for telling acne apart).
@@ -176,6 +159,21 @@ Frame look_at(const ShadowMap::Camera& c) {
     return f;
 }
 }  // namespace
+
+// The light ray through texel (i, j)'s centre: a parallel ray from the light's plane
+// (directional) or a ray from the light's position (spot) with d · f = 1, so that its t is the
+// depth along f in both cases.
+void ShadowMap::texel_ray(const Frame& f, int n, int i, int j, dvec3& o, dvec3& d) {
+    const double x = (2.0 * (i + 0.5) / n - 1.0) * f.half;
+    const double y = (2.0 * (j + 0.5) / n - 1.0) * f.half;
+    if (f.perspective) {
+        o = f.origin;
+        d = f.forward + x * f.right + y * f.up;
+    } else {
+        o = f.origin + x * f.right + y * f.up;
+        d = f.forward;
+    }
+}
 
 ShadowMap::Frame ShadowMap::light_frame(const Light& l) {
     Frame f = look_at(l);
@@ -796,195 +794,6 @@ ShadowMap::Result ShadowMap::render(const Input& in) {
             count(r.counts, r.last.verdict);
         }
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-namespace {
-
-std::uint32_t verdict_colour(Verdict v) {
-    switch (v) {
-        case Verdict::Pending:
-            return 0;
-        case Verdict::Background:
-            return 0xd8dde4ffu;
-        case Verdict::Outside:
-            return 0xf3eccdffu;
-        case Verdict::Lit:
-            return 0xf2c94cffu;
-        case Verdict::Shadow:
-            return 0x3b4a6bffu;
-        case Verdict::Acne:
-            return 0xd13fc2ffu;
-        case Verdict::FalseShadow:
-            return 0xd9472bffu;
-        case Verdict::FalseLit:
-            return 0x2bb3a6ffu;
-    }
-    return 0;
-}
-
-std::uint32_t grey(double g) {
-    const auto v = std::uint32_t(std::clamp(g, 0.0, 255.0));
-    return (v << 24) | (v << 16) | (v << 8) | 0xffu;
-}
-
-void square(Scene& scene, glm::dvec2 at, double size, Role role, float width) {
-    scene.polygons.push_back(
-        {{at, at + glm::dvec2(size, 0), at + glm::dvec2(size, size), at + glm::dvec2(0, size)},
-         {role, width},
-         true,
-         false});
-}
-
-}  // namespace
-
-// 3D: the triangles, the light and its frustum, the eye; while rasterising, the map's samples
-// (each texel centre's ray to the surface it holds); while looking up, the eye ray to P, P's
-// ray to the light and the surface point the texel remembers. 2D: the depth map as grey
-// texels (near dark, far light, cleared texels pale blue) with the texel looked up outlined,
-// and the eye image filling in beside it.
-void ShadowMap::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const bool started = s.phase != Phase::Setup;
-    const Frame light = started ? s.light : light_frame(in.light);
-    const Frame eye = started ? s.eye : eye_frame(in.eye);
-    const int n = in.map_size;
-
-    // ---- 3D ----
-    const bool rasterising = s.last == Phase::Rasterise && started;
-    for (std::size_t k = 0; k < in.triangles.size(); ++k) {
-        const auto& t = in.triangles[k];
-        const bool now = rasterising && int(k) == s.k;
-        const bool seen = s.last == Phase::Lookup && s.look.tri == int(k);
-        scene.faces3.push_back({{t[0], t[1], t[2]},
-                                {now    ? Role::Active
-                                 : seen ? Role::Kept
-                                        : Role::Subject,
-                                 now ? 2.5f : 1.0f},
-                                now ? 0.6f : 0.35f});
-    }
-    // The light's frustum, drawn to the far plane or just past the scene, whichever is nearer.
-    double reach = in.light.near;
-    for (const auto& t : in.triangles)
-        for (const auto& p : t) reach = std::max(reach, glm::dot(p - light.origin, light.forward));
-    reach = std::min(in.light.far, reach * 1.1 + 0.1);
-    auto corner = [&](double d, double x, double y) {
-        const double w = light.perspective ? d * light.half : light.half;
-        return light.origin + d * light.forward + x * w * light.right + y * w * light.up;
-    };
-    const double xs[4] = {-1, 1, 1, -1}, ys[4] = {-1, -1, 1, 1};
-    for (int c = 0; c < 4; ++c) {
-        const int c2 = (c + 1) % 4;
-        const Style frustum{Role::Window, 1.0f, true};
-        scene.segments3.push_back({corner(in.light.near, xs[c], ys[c]),
-                                   corner(in.light.near, xs[c2], ys[c2]), "", frustum, false});
-        scene.segments3.push_back(
-            {corner(reach, xs[c], ys[c]), corner(reach, xs[c2], ys[c2]), "", frustum, false});
-        scene.segments3.push_back({light.perspective ? light.origin : corner(0, xs[c], ys[c]),
-                                   corner(reach, xs[c], ys[c]), "", frustum, false});
-    }
-    scene.points3.push_back({light.origin, "light", {Role::Window}, 7.0f});
-    scene.segments3.push_back({light.origin,
-                               light.origin + light.forward * std::min(reach, 1.0 + 0.2 * reach),
-                               "f",
-                               {Role::Window, 2.0f},
-                               true});
-    scene.points3.push_back({eye.origin, "eye", {Role::Neutral}, 6.0f});
-
-    if (rasterising && n <= 16) {
-        // The map's samples: where each texel's centre ray meets the surface it holds.
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const std::size_t at = std::size_t(j) * n + i;
-                if (s.owner[at] < 0) continue;
-                dvec3 o, d;
-                texel_ray(light, n, i, j, o, d);
-                const dvec3 q = o + s.depth[at] * d;
-                const bool now = s.owner[at] == s.k;
-                scene.points3.push_back(
-                    {q, "", {now ? Role::Active : Role::Construction}, now ? 3.5f : 2.5f});
-                if (now)
-                    scene.segments3.push_back({o, q, "", {Role::Construction, 0.75f, true}, false});
-            }
-    }
-    if (s.last == Phase::Lookup && started) {
-        const auto& l = s.look;
-        const int w = in.eye.width, h = in.eye.height;
-        const double aspect = double(w) / h;
-        const double x = (2.0 * (l.i + 0.5) / w - 1.0) * eye.half * aspect;
-        const double y = (2.0 * (l.j + 0.5) / h - 1.0) * eye.half;
-        const dvec3 dir = eye.forward + x * eye.right + y * eye.up;
-        if (l.tri < 0) {
-            scene.segments3.push_back({eye.origin,
-                                       eye.origin + dir * (reach + 1),
-                                       "eye ray",
-                                       {Role::Discarded, 1.5f, true},
-                                       true});
-        } else {
-            scene.segments3.push_back({eye.origin, l.p, "eye ray", {Role::Active, 2.0f}, false});
-            scene.points3.push_back({l.p, "P", {Role::Active}, 6.0f});
-            if (l.ti >= 0) {
-                const dvec3 to = light.perspective ? light.origin : l.p - light.forward * l.d_p;
-                scene.segments3.push_back(
-                    {l.p,
-                     to,
-                     l.exact_shadow ? "blocked" : "to the light",
-                     {l.exact_shadow ? Role::Discarded : Role::Kept, 1.5f, true},
-                     false});
-                dvec3 o, d;
-                texel_ray(light, n, l.ti, l.tj, o, d);
-                scene.segments3.push_back(
-                    {o, o + l.d_map * d, "", {Role::Window, 1.0f, true}, false});
-                scene.points3.push_back({o + l.d_map * d, "d_map", {Role::Window}, 5.0f});
-            }
-        }
-    }
-    std::erase_if(scene.segments3,
-                  [](const Segment3& g) { return !finite3(g.a) || !finite3(g.b); });
-    std::erase_if(scene.points3, [](const Point3& q) { return !finite3(q.p); });
-
-    // ---- 2D: the depth map and the eye image, each one unit a cell ----
-    PixelGrid2 map;
-    map.origin = {0, 0};
-    map.width = map.height = n;
-    map.rgba.assign(std::size_t(n) * n, 0xdbe7f5ffu);  // cleared: far
-    if (started) {
-        double lo = 1e300, hi = -1e300;
-        for (std::size_t q = 0; q < s.depth.size(); ++q)
-            if (s.owner[q] >= 0) lo = std::min(lo, s.depth[q]), hi = std::max(hi, s.depth[q]);
-        for (std::size_t q = 0; q < s.depth.size(); ++q)
-            if (s.owner[q] >= 0)
-                map.rgba[q] = grey(hi > lo ? 40 + 170 * (s.depth[q] - lo) / (hi - lo) : 110);
-    }
-    scene.grids.push_back(std::move(map));
-    // The captions go under the grids, where a small map leaves room for them.
-    const double below = -0.6 * std::max(1.0, n / 8.0);
-    scene.labels.push_back({{0, below}, "depth map", {Role::Window}});
-    const double gap = std::max(2.0, n / 4.0);
-    PixelGrid2 img;
-    img.origin = {n + gap, 0};
-    img.width = in.eye.width;
-    img.height = in.eye.height;
-    img.rgba.assign(std::size_t(img.width) * img.height, 0);
-    for (std::size_t q = 0; q < s.image.size(); ++q) img.rgba[q] = verdict_colour(s.image[q]);
-    scene.grids.push_back(std::move(img));
-    scene.labels.push_back({{n + gap, below}, "eye image", {Role::Neutral}});
-    if (rasterising) {
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                if (s.owner[std::size_t(j) * n + i] == s.k)
-                    square(scene, {double(i), double(j)}, 1.0, Role::Active, 1.5f);
-    }
-    if (s.last == Phase::Lookup && started) {
-        const auto& l = s.look;
-        square(scene, {n + gap + l.i, double(l.j)}, 1.0, Role::Active, 2.5f);
-        if (l.ti >= 0) {
-            square(scene, {double(l.ti), double(l.tj)}, 1.0, Role::Active, 3.0f);
-            scene.labels.push_back(
-                {{l.ti + 0.1, l.tj + 0.5}, "d_map = " + num(l.d_map, 3), {Role::Active}});
-        }
-    }
 }
 
 }  // namespace cg

@@ -182,6 +182,8 @@ struct ShadowMap {
     static Frame light_frame(const Light& l);
     static Frame eye_frame(const Eye& e);
     static glm::dmat4 view_matrix(const Frame& f);  // light_from_world
+    // The light ray through texel (i, j)'s centre, o + t d with d · f = 1 (t is the depth).
+    static void texel_ray(const Frame& f, int n, int i, int j, glm::dvec3& o, glm::dvec3& d);
     // Rasterise triangle k into depth/owner; returns texels covered, sets `written`.
     static int rasterise(const Input& in, const Frame& light, int k, std::vector<double>& depth,
                          std::vector<int>& owner, int& written);

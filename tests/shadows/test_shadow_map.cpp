@@ -574,18 +574,34 @@ TEST_CASE("shadow-map: the picture — scene, frustum, map and eye image", "[sha
     cg::Scene pic;
     ShadowMap::draw(s, pic);
     CHECK(pic.has_3d());
-    CHECK(pic.has_2d());
+    CHECK(!pic.has_2d());  // the map and the image are panels, not drawn into a world
     CHECK(pic.faces3.size() == 4);
-    REQUIRE(pic.grids.size() == 2);
-    CHECK(pic.grids[0].width == 8);
-    CHECK(pic.grids[1].width == 16);
+    CHECK(pic.focus3.size() == 1);
+    REQUIRE(pic.panels.size() == 2);
+    for (const auto& panel : pic.panels) {
+        CHECK(panel.kind == cg::PanelKind::Image);
+        REQUIRE(panel.grids.size() == 1);
+    }
+    CHECK(pic.panels[0].grids[0].width == 8);  // the depth map
+    CHECK(pic.panels[1].grids[0].width == 16);  // the eye image
     for (int k = 0; k < 3; ++k) ShadowMap::step(s, nullptr);  // setup, two triangles
     cg::Scene mid;
     ShadowMap::draw(s, mid);
     int active = 0;
-    for (const auto& poly : mid.polygons) active += poly.style.role == cg::Role::Active;
-    CHECK(active == s.written);
+    for (const auto& poly : mid.panels[0].polygons) active += poly.style.role == cg::Role::Active;
+    CHECK(active == s.written);  // the texels the triangle wrote, outlined in the map
     CHECK(active > 0);
+    // The first lookup that finds a texel: the texel and the pixel outlined, in cell units.
+    while (!(s.last == ShadowMap::Phase::Lookup && s.look.ti >= 0)) ShadowMap::step(s, nullptr);
+    cg::Scene first;
+    ShadowMap::draw(s, first);
+    const auto& texel = first.panels[0].polygons.back();
+    CHECK(texel.style.role == cg::Role::Active);
+    CHECK(texel.points[0] == glm::dvec2(s.look.ti, s.look.tj));
+    const auto& pixel = first.panels[1].polygons.back();
+    CHECK(pixel.style.role == cg::Role::Active);
+    CHECK(pixel.points[0] == glm::dvec2(s.look.i, s.look.j));
+    CHECK(first.panels[1].labels.size() == 1);  // the pixel's verdict
     while (s.phase != ShadowMap::Phase::Summary) ShadowMap::step(s, nullptr);
     cg::Scene look;
     ShadowMap::draw(s, look);
@@ -593,6 +609,8 @@ TEST_CASE("shadow-map: the picture — scene, frustum, map and eye image", "[sha
     for (const auto& q : look.points3) p = p || q.label == "P", dmap = dmap || q.label == "d_map";
     CHECK(p == (s.look.tri >= 0));
     CHECK(dmap == (s.look.ti >= 0));
-    // The eye image is filled in: no empty cell left.
-    for (auto c : look.grids[1].rgba) CHECK(c != 0u);
+    // The eye image is filled in: no empty cell left, and its key names what it shows.
+    for (auto c : look.panels[1].grids[0].rgba) CHECK(c != 0u);
+    CHECK(!look.panels[1].legend.empty());
+    CHECK(look.panels[1].legend[0].text == "lit");
 }
