@@ -1,5 +1,5 @@
 // Sections: [helpers] [spec] [validate and start] [pieces] [advance] [narrate] [result and
-// compute] [draw]
+// compute] (the picture: radiosity_draw.cpp)
 #include "radiosity/radiosity.hpp"
 
 #include <algorithm>
@@ -715,110 +715,6 @@ Radiosity::Result Radiosity::compute(const Input& in) {
     r.shot_power = shot_power;
     r.first_shot = first;
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-namespace {
-
-std::vector<dvec3> outline(const Patch& p) {
-    if (p.type == Patch::Type::Triangle) return {p.a, p.b, p.c};
-    return {p.a, p.a + p.b, p.a + p.b + p.c, p.a + p.c};
-}
-
-std::uint32_t grey(double v) {
-    const auto g = std::uint32_t(std::lround(255 * std::clamp(v, 0.0, 1.0)));
-    return g << 24 | g << 16 | g << 8 | 0xffu;
-}
-
-constexpr std::size_t kMaxMatrix = 128;  // the matrix is drawn up to this many patches
-
-}  // namespace
-
-// 3D: every patch shaded by its current B (tone-mapped as the image); while the form factors
-// are computed, patch i outlined and the others shaded by F_ij instead (bright: much of i's
-// light reaches them). 2D: the matrix F filling in (phase 1), then the camera image and, to its
-// right, log10 of the residual per step.
-void Radiosity::draw(const State& s, cg::Scene& scene) {
-    const Scene3& sc = *s.scene;
-    const std::size_t n = sc.patches.size();
-    const bool rows = s.last == Phase::FormFactors && s.row >= 0;
-    const std::vector<std::uint32_t> colours = [&] {
-        // One colour per patch: B through the image's tone mapping (one pixel per patch).
-        Scene3 flat;
-        flat.emission = sc.emission;
-        flat.pixel.resize(n);
-        for (std::size_t k = 0; k < n; ++k) flat.pixel[k] = int(k);
-        return image(flat, s.B);
-    }();
-    double fmax = 0;
-    if (rows)
-        for (std::size_t j = 0; j < n; ++j) fmax = std::max(fmax, s.F[std::size_t(s.row) * n + j]);
-    for (std::size_t k = 0; k < n; ++k) {
-        Face3 f{outline(sc.patches[k]), {Role::Subject, 0.5f}, 0.9f, true, true};
-        if (rows) {
-            const double v = s.F[std::size_t(s.row) * n + k];
-            f.style.rgba = grey(fmax > 0 ? std::sqrt(v / fmax) : 0);
-            if (int(k) == s.row) f.style = {Role::Active, 2.5f};
-        } else {
-            f.style.rgba = colours[k];
-            if (s.last == Phase::Solve && s.in->method == Method::Progressive && int(k) == s.shooter)
-                f.style = {Role::Active, 2.5f, false, colours[k]};
-        }
-        scene.faces3.push_back(std::move(f));
-    }
-
-    // 2D, stacked so that the layout stays put from step to step: the residual plot at the
-    // bottom, the camera image above it, the matrix F on top.
-    const int w = s.in->camera.width, h = s.in->camera.height;
-    const double pw = double(w), ph = std::max(4.0, 0.5 * h);
-    const double image_y = ph + 4.5, matrix_y = image_y + h + 4.5;  // room for a caption each
-    if (n <= kMaxMatrix) {
-        PixelGrid2 m;
-        m.origin = {0, matrix_y};
-        m.width = m.height = int(n);
-        m.rgba.assign(n * n, 0);
-        double top = 0;
-        for (double v : s.F) top = std::max(top, v);
-        for (std::size_t i = 0; i < n && int(i) <= s.row; ++i)
-            for (std::size_t j = 0; j < n; ++j)  // row i of F drawn at the top, as written
-                m.rgba[(n - 1 - i) * n + j] =
-                    grey(top > 0 ? 1 - std::sqrt(s.F[i * n + j] / top) : 1);
-        m.grid_lines = n <= 32;
-        scene.grids.push_back(std::move(m));
-        scene.labels.push_back(
-            {{0, matrix_y + double(n) + 1.5}, "F_ij (dark: large)", {Role::Neutral}});
-    }
-    PixelGrid2 img;
-    img.origin = {0, image_y};
-    img.width = w;
-    img.height = h;
-    img.rgba = image(sc, s.B);
-    img.grid_lines = false;
-    scene.grids.push_back(std::move(img));
-    scene.labels.push_back({{0, image_y + h + 1.5},
-                            "camera, step " + std::to_string(s.steps), {Role::Neutral}});
-    // The residual plot: log10(residual) against the step.
-    scene.polygons.push_back({{{0, 0}, {pw, 0}, {pw, ph}, {0, ph}}, {Role::Construction, 1.0f}});
-    double lo = std::log10(s.in->tolerance), hi = lo + 1;
-    for (double r : s.history)
-        if (r > 0) hi = std::max(hi, std::log10(r)), lo = std::min(lo, std::log10(r));
-    if (!s.history.empty()) {
-        Polygon2 line{{}, {Role::Active, 2.0f}, false, false};
-        const double count = std::max<double>(1, double(s.history.size() - 1));
-        for (std::size_t q = 0; q < s.history.size(); ++q) {
-            const double y = s.history[q] > 0 ? std::log10(s.history[q]) : lo;
-            line.points.push_back({pw * double(q) / count, ph * (y - lo) / (hi - lo)});
-        }
-        if (line.points.size() == 1) line.points.push_back(line.points[0] + glm::dvec2(0.01, 0));
-        scene.polygons.push_back(std::move(line));
-    }
-    const double tol_y = ph * (std::log10(s.in->tolerance) - lo) / (hi - lo);
-    scene.segments.push_back({{0, tol_y}, {pw, tol_y}, "", {Role::Window, 1.0f, true}});
-    scene.labels.push_back({{0, ph + 1.5},
-                            "log10 residual" + (s.history.empty() ? std::string()
-                                                                   : " " + num(s.residual, 3)),
-                            {Role::Neutral}});
 }
 
 }  // namespace cg

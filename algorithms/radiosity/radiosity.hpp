@@ -31,10 +31,10 @@
 // radius ≥ 1) and B diverges. That check needs the form factors, so start computes them first
 // when, and only when, some ρ is 1.
 //
-// The picture: the patches shaded by the current B (3D), and a small image from the camera
-// (each pixel the tone-mapped B of the patch its centre ray meets first; the id buffer is
-// computed once at the start) with the residual plot beside it; while phase 1 runs, the matrix
-// F filling in row by row. Tone mapping: B is divided by the largest channel of any
+// The picture (radiosity_draw.cpp): the patches shaded by the current B (3D); while phase 1
+// runs, the matrix F filling in row by row (an image panel); while solving, the image from the
+// camera (each pixel the tone-mapped B of the patch its centre ray meets first; the id buffer
+// is computed once at the start) and the residual per step on a log axis. Tone mapping: B is divided by the largest channel of any
 // non-emitting patch (of any patch when all emit), clamped to 1 and raised to 1/2.2.
 //
 // Refused: no surfaces or more than kMaxPatches after subdivision, a disc or point patch, a

@@ -475,20 +475,40 @@ TEST_CASE("radiosity: the picture — patches by B, the matrix, the camera image
     cg::Scene rows;
     Radiosity::draw(s, rows);
     CHECK(rows.faces3.size() == 28);
-    REQUIRE(rows.grids.size() == 2);  // the matrix and the camera image
-    CHECK(rows.grids[0].width == 28);
-    CHECK(rows.polygons.size() == 1);  // the residual plot's empty box
+    CHECK(rows.faces3[0].style.role == cg::Role::Active);  // patch i = 0, its row computed
+    CHECK(!rows.has_2d());  // nothing in the world: the matrix and the row sums are panels
+    REQUIRE(rows.panels.size() == 2);
+    CHECK(rows.panels[0].kind == cg::PanelKind::Image);  // the matrix F
+    REQUIRE(rows.panels[0].grids.size() == 1);
+    CHECK(rows.panels[0].grids[0].width == 28);
+    CHECK(rows.panels[0].polygons.size() == 1);  // row i outlined
+    CHECK(rows.panels[1].kind == cg::PanelKind::Chart);  // the row sums, one bar so far
+    CHECK(rows.panels[1].polygons.size() == 2);          // the line at 1 and row 0's bar
+    CHECK(rows.focus3.size() == 1);
     while (s.phase == Radiosity::Phase::FormFactors) Radiosity::step(s, nullptr);
     Radiosity::step(s, nullptr);
     cg::Scene solve;
     Radiosity::draw(s, solve);
-    REQUIRE(solve.grids.size() == 2);
-    CHECK(solve.grids[1].width == in.camera.width);
-    CHECK(solve.grids[1].rgba == Radiosity::image(*s.scene, s.B));
-    CHECK(solve.polygons.size() == 2);
-    // The shooter is the lamp (patches 24..27), drawn as the active patch.
+    REQUIRE(solve.panels.size() == 2);
+    CHECK(solve.panels[0].kind == cg::PanelKind::Image);  // the camera's picture
+    REQUIRE(solve.panels[0].grids.size() == 1);
+    CHECK(solve.panels[0].grids[0].width == in.camera.width);
+    CHECK(solve.panels[0].grids[0].rgba == Radiosity::image(*s.scene, s.B));
+    const cg::Panel& chart = solve.panels[1];  // the residual per step, on a log axis
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.y.log);
+    REQUIRE(chart.polygons.size() == 2);  // the tolerance and the residual so far
+    CHECK(chart.polygons[0].points.front().y == in.tolerance);
+    REQUIRE(chart.polygons[1].points.size() == s.history.size());
+    CHECK(chart.polygons[1].points.back().y == s.residual);
     CHECK(s.shooter >= 24);
-    CHECK(solve.faces3[std::size_t(s.shooter)].style.role == cg::Role::Active);
+    // The shooter is the lamp (patches 24..27): it keeps its colour, outlined and named in orange.
+    int outline = 0;
+    for (const auto& g : solve.segments3) outline += g.style.role == cg::Role::Active;
+    CHECK(outline == int(solve.faces3[std::size_t(s.shooter)].points.size()));
+    REQUIRE(solve.labels3.size() == 1);
+    CHECK(solve.labels3[0].text == "shooter");
+    CHECK(solve.labels3[0].style.role == cg::Role::Active);
     // The red wall looks red and the green one green from the camera.
     const auto img = Radiosity::image(*s.scene, Radiosity::compute(cornell(Method::GaussSeidel, 2)).radiosity);
     const auto px = [&](int i, int j) { return img[std::size_t(j * in.camera.width + i)]; };
