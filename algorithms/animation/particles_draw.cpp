@@ -2,7 +2,8 @@
 // emitter (a point, a disc or a line, in the window's blue), the particles coloured by age as a
 // share of their lifetime (yellow when born, through orange to dark red when about to die), a
 // velocity tick on a few of them, and the focus particle in orange with its velocity arrow.
-// 2D beside it: the counts per frame over the whole run — alive (a line), emitted and killed
+// The camera frames the region the particles reach and the focus particle. Beside it a chart of
+// the counts against t (s) over the whole run — alive (thick), emitted and killed per frame
 // (thinner) — so a fountain's ramp up to rate × lifetime and its steady state show at a glance.
 #include <algorithm>
 #include <cmath>
@@ -152,38 +153,33 @@ void Particles::draw(const State& s, Scene& scene) {
             scene.segments3.push_back({f.x, f.x + tick * f.v, "v", {Role::Active, 2.0f}, true});
     }
 
-    // 2D: alive, emitted and killed per frame over the whole run.
-    const double pw = 5, ph = 6;
-    scene.polygons.push_back({{{0, 0}, {pw, 0}, {pw, ph}, {0, ph}}, {Role::Construction, 1.0f}});
-    int top = 1;
-    for (std::size_t q = 0; q < s.alive_n.size(); ++q)
-        top = std::max({top, s.alive_n[q], s.emitted_n[q], s.killed_n[q]});
-    const double frames = double(in.frames);
-    auto plot = [&](const std::vector<int>& c, Role role, float width) {
-        if (c.empty()) return;
-        Polygon2 line{{}, {role, width}, false, false};
-        const std::size_t step = (c.size() + kMaxPlotPoints - 1) / kMaxPlotPoints;
-        for (std::size_t q = 0; q < c.size(); q += step)
-            line.points.push_back({pw * double(q + 1) / frames, ph * c[q] / top});
-        if ((c.size() - 1) % step != 0)
-            line.points.push_back({pw * double(c.size()) / frames, ph * c.back() / top});
-        if (line.points.size() == 1) line.points.push_back(line.points[0] + glm::dvec2(0.01, 0));
-        scene.polygons.push_back(std::move(line));
-    };
-    plot(s.killed_n, Role::Leaving, 1.5f);
-    plot(s.emitted_n, Role::Entering, 1.5f);
-    plot(s.alive_n, Role::Active, 2.5f);
+    // The camera frames the region the particles reach (from the input, so it stays put) and
+    // the focus particle.
+    glm::dvec3 lo = centre - glm::dvec3(0.7 * reach), hi = centre + glm::dvec3(0.7 * reach);
+    if (f.fate == Fate::Moved || f.fate == Fate::Born)
+        lo = glm::min(lo, f.x), hi = glm::max(hi, f.x);
+    add_focus(scene, lo, hi);
+
+    // Chart: alive, emitted and killed per frame over the whole run.
     const int emitted_now = s.emitted_n.empty() ? 0 : s.emitted_n.back();
     const int killed_now = s.killed_n.empty() ? 0 : s.killed_n.back();
-    scene.labels.push_back({{0, ph + 1.9}, "alive " + std::to_string(n), {Role::Active}});
-    scene.labels.push_back(
-        {{0, ph + 1.15}, "emitted " + std::to_string(emitted_now), {Role::Entering}});
-    scene.labels.push_back(
-        {{0, ph + 0.4}, "killed " + std::to_string(killed_now), {Role::Leaving}});
-    scene.labels.push_back({{0, -0.4}, "t = 0", {Role::Neutral}});
-    scene.labels.push_back({{pw - 1, -0.4}, "t = " + num(duration, 4), {Role::Neutral}});
-    scene.labels.push_back({{pw + 0.2, ph}, std::to_string(top), {Role::Neutral}});
-    scene.labels.push_back({{pw + 0.2, 0}, "0", {Role::Neutral}});
+    Panel& counts = add_chart(scene, "particles, frame by frame", Axis{"t (s)", 0, duration},
+                              Axis{"count", 0, 0, false, true});
+    auto plot = [&](const std::vector<int>& c, Style style, std::string name) {
+        std::vector<glm::dvec2> line;
+        const std::size_t step = std::max<std::size_t>(1, (c.size() + kMaxPlotPoints - 1) / kMaxPlotPoints);
+        for (std::size_t q = 0; q < c.size(); q += step)
+            line.push_back({double(q + 1) * in.dt, double(c[q])});
+        if (!c.empty() && (c.size() - 1) % step != 0)
+            line.push_back({double(c.size()) * in.dt, double(c.back())});
+        add_line(counts, std::move(line), style, std::move(name));
+    };
+    plot(s.alive_n, {Role::Active, 2.5f}, "alive " + std::to_string(n));
+    plot(s.emitted_n, {Role::Entering, 1.5f}, "emitted " + std::to_string(emitted_now));
+    plot(s.killed_n, {Role::Leaving, 1.5f}, "killed " + std::to_string(killed_now));
+    if (!s.alive_n.empty())
+        counts.points.push_back(
+            {{double(s.alive_n.size()) * in.dt, double(s.alive_n.back())}, "", {Role::Active}, 4.5f});
 }
 
 }  // namespace cg

@@ -551,7 +551,7 @@ TEST_CASE("particles: exam problems, worked by hand", "[animation][particles][ex
     CHECK(died > 20);
 }
 
-TEST_CASE("particles: the picture — plane, emitter, particles by age, the counts plotted",
+TEST_CASE("particles: the picture — plane, emitter, particles by age, the counts in a chart",
           "[animation][particles]") {
     const auto& fountain = lesson().presets[1];
     REQUIRE(fountain.name.find("fountain") != std::string::npos);
@@ -562,7 +562,8 @@ TEST_CASE("particles: the picture — plane, emitter, particles by age, the coun
     Particles::draw(s, scene);
     CHECK(scene.points3.size() >= s.alive.size());  // the particles, the emitter, the focus
     CHECK(scene.faces3.size() == 1);                // the plane
-    CHECK(scene.has_2d());
+    CHECK_FALSE(scene.has_2d());  // nothing on the world's grid
+    CHECK(scene.focus3.size() == 1);
     int arrows = 0;
     for (const auto& seg : scene.segments3) arrows += seg.arrow;
     CHECK(arrows >= 5);  // velocity ticks
@@ -570,5 +571,14 @@ TEST_CASE("particles: the picture — plane, emitter, particles by age, the coun
     std::set<std::uint32_t> colours;
     for (const auto& p : scene.points3) colours.insert(p.style.rgba);
     CHECK(colours.size() > 10);
-    CHECK(scene.polygons.size() == 4);  // the frame and three count lines
+    // The counts against t: a chart with three series, alive first, named with the counts now.
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& counts = scene.panels[0];
+    CHECK(counts.kind == cg::PanelKind::Chart);
+    CHECK(counts.x.label == "t (s)");
+    CHECK(counts.y.include_zero);
+    CHECK(counts.polygons.size() == 3);
+    REQUIRE(counts.legend.size() == 3);
+    CHECK(counts.legend[0].text == "alive " + std::to_string(s.alive.size()));
+    CHECK(counts.polygons[0].points.size() == s.alive_n.size());
 }
