@@ -1,4 +1,4 @@
-// Sections: [spec] [validate] [advance] [narrate] [plain] [draw]
+// Sections: [spec] [validate] [advance] [narrate] [plain]; the picture is in toon_shading_draw.cpp
 #include "npr/toon_shading.hpp"
 
 #include <algorithm>
@@ -209,82 +209,6 @@ void ToonShading::step(State& s, StepInfo* info) {
         ++r.counts[static_cast<std::size_t>(b)];
     }
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-void ToonShading::draw(const State& s, Scene& scene) {
-    // Shaded faces filled in their band's colour; faces still to come faint; the current face
-    // outlined in orange with N̂ and L̂ drawn from its centre; the light's direction from the
-    // mesh; and, as a legend, the 1D texture: n cells along a strip under the mesh.
-    const auto& in = *s.in;
-    const auto& m = in.mesh;
-    const std::vector<glm::dvec3> colours =
-        in.colours.empty() ? default_colours(static_cast<int>(in.thresholds.size()) + 1) : in.colours;
-    const auto [mid, size] = npr::bounds(m);
-    const int shaded = static_cast<int>(s.r.band.size());
-    const int current = s.last == Phase::Face && s.k > 0 && s.phase != Phase::Done ? s.k - 1 : -1;
-    const bool small = m.faces.size() <= 24;
-    auto centroid = [&](const std::vector<int>& f) {
-        glm::dvec3 c{0, 0, 0};
-        for (int i : f) c += m.vertices[static_cast<std::size_t>(i)];
-        return c / static_cast<double>(f.size());
-    };
-    for (std::size_t k = 0; k < m.faces.size(); ++k) {
-        Face3 face;
-        for (int i : m.faces[k]) face.points.push_back(m.vertices[static_cast<std::size_t>(i)]);
-        face.two_sided = false;
-        if (static_cast<int>(k) < shaded) {
-            const int b = s.r.band[k];
-            face.style = {Role::Subject, 1.0f, false, pack_rgba(colours[static_cast<std::size_t>(b)])};
-            face.alpha = 1.0f;
-            face.outline = small;
-        } else {
-            face.style = {Role::Neutral, 1.0f};
-            face.alpha = 0.08f;
-        }
-        if (static_cast<int>(k) == current) face.style.width = 3.0f, face.outline = true;
-        scene.faces3.push_back(std::move(face));
-        if (small && static_cast<int>(k) < shaded)
-            scene.labels3.push_back({centroid(m.faces[k]) , std::to_string(s.r.band[k]), {Role::Neutral}});
-    }
-    if (current >= 0) {
-        const glm::dvec3 c = centroid(m.faces[static_cast<std::size_t>(current)]);
-        scene.segments3.push_back({c, c + 0.3 * size * s.n, "N", {Role::Active, 3.0f}, true});
-        scene.segments3.push_back({c, c + 0.3 * size * s.l, "L", {Role::Window, 2.5f}, true});
-        // Outline the current face on top.
-        Face3 f;
-        for (int i : m.faces[static_cast<std::size_t>(current)])
-            f.points.push_back(m.vertices[static_cast<std::size_t>(i)]);
-        f.style = {Role::Active, 3.0f};
-        f.alpha = 0.0f;
-        scene.faces3.push_back(std::move(f));
-    }
-    // The light: an arrow pointing along L̂ towards the light, outside the mesh.
-    const glm::dvec3 l = s.l;
-    scene.segments3.push_back({mid + 0.6 * size * l, mid + 0.95 * size * l, "towards the light",
-                               {Role::Window, 2.5f}, true});
-    // The 1D texture: cell b spans [t_b, t_{b+1}) of a strip below the mesh, u running along x.
-    const double y = mid.y - 0.75 * size, x0 = mid.x - 0.5 * size, w = size, h = 0.07 * size;
-    const auto& t = in.thresholds;
-    for (std::size_t b = 0; b <= t.size(); ++b) {
-        const double u0 = b == 0 ? 0 : t[b - 1], u1 = b == t.size() ? 1 : t[b];
-        Face3 cellf;
-        cellf.points = {{x0 + u0 * w, y, mid.z}, {x0 + u1 * w, y, mid.z},
-                        {x0 + u1 * w, y + h, mid.z}, {x0 + u0 * w, y + h, mid.z}};
-        cellf.style = {Role::Subject, 1.0f, false, pack_rgba(colours[b])};
-        cellf.alpha = 1.0f;
-        scene.faces3.push_back(std::move(cellf));
-        if (b > 0)
-            scene.labels3.push_back({{x0 + u0 * w, y - 0.6 * h, mid.z}, num(u0, 3), {Role::Neutral}});
-    }
-    scene.labels3.push_back({{x0 - 0.05 * w, y + 0.5 * h, mid.z}, "u = 0", {Role::Neutral}});
-    scene.labels3.push_back({{x0 + 1.05 * w, y + 0.5 * h, mid.z}, "1", {Role::Neutral}});
-    if (current >= 0) {
-        const double d = std::max(0.0, s.ndotl);
-        scene.segments3.push_back({{x0 + d * w, y + 2.2 * h, mid.z}, {x0 + d * w, y + h, mid.z},
-                                   "u = d = " + num(d, 3), {Role::Active, 2.5f}, true});
-    }
 }
 
 }  // namespace cg

@@ -303,3 +303,29 @@ TEST_CASE("toon-shading: exam answers match the exact fractions", "[npr][toon][e
     const cg::ExamProblem p = cg::make_exam(*registry.find("toon-shading"), 7);
     CHECK(p.answers == std::vector<std::string>{"band"});
 }
+
+TEST_CASE("toon-shading: the picture — the face with N̂ and L̂ framed, the rule as a chart",
+          "[npr][toon-shading]") {
+    ToonShading::Input in;
+    in.mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};  // N̂ = (0, 0, 1)
+    in.mesh.faces = {{0, 1, 2}};
+    in.light = {0, 0, 1};
+    in.thresholds = {0.5};
+    auto s = ToonShading::start(in);
+    ToonShading::step(s, nullptr);
+    cg::Scene pic;
+    ToonShading::draw(s, pic);
+    // N̂ and L̂ from the face's centre, never shorter than 30 px, and the camera framed on them.
+    int vectors = 0;
+    for (const auto& seg : pic.segments3) vectors += seg.min_pixels >= 30;
+    CHECK(vectors == 2);
+    CHECK(pic.focus3.size() == 1);
+    // The 1D texture as a chart: one cell per band, the face's d at its band.
+    REQUIRE(pic.panels.size() == 1);
+    const cg::Panel& chart = pic.panels[0];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.polygons.size() == 2);
+    REQUIRE(chart.points.size() == 1);
+    CHECK(chart.points[0].p == glm::dvec2(1, 1));  // d = 1, band 1
+    CHECK(chart.points[0].style.role == cg::Role::Active);
+}
