@@ -27,7 +27,12 @@ bool is_key(const SDL_Event& e) { return e.type == SDL_KEYDOWN || e.type == SDL_
 bool EventFeed::must_wait(const SDL_Event& e) const {
     if (is_button(e)) {
         const int b = imgui_button(e.button.button);
-        return b >= 0 && button_changed_[b];  // its press (or release) is this frame's
+        if (b >= 0 && button_changed_[b]) return true;  // its press (or release) is this frame's
+        // A press where the pointer has only just arrived waits a frame: ImGui decides what is
+        // hovered from where the pointer was, and an item that lets others overlap it (a tab)
+        // takes a click only once it was the hovered one (HoveredIdPreviousFrame). A move and
+        // its click sent together lost the click on a tab that way.
+        return e.type == SDL_MOUSEBUTTONDOWN && moved_;
     }
     if (e.type == SDL_MOUSEMOTION) return any_button_changed_;  // a click happens where it was
     if (is_key(e) && !(e.type == SDL_KEYDOWN && e.key.repeat))
@@ -38,9 +43,12 @@ bool EventFeed::must_wait(const SDL_Event& e) const {
 
 void EventFeed::note(const SDL_Event& e) {
     switch (e.type) {
-        case SDL_MOUSEMOTION:
-            pos_ = ImVec2(static_cast<float>(e.motion.x), static_cast<float>(e.motion.y));
+        case SDL_MOUSEMOTION: {
+            const ImVec2 to(static_cast<float>(e.motion.x), static_cast<float>(e.motion.y));
+            moved_ = moved_ || to.x != pos_.x || to.y != pos_.y;
+            pos_ = to;
             break;
+        }
         case SDL_MOUSEBUTTONDOWN:
         case SDL_MOUSEBUTTONUP: {
             pos_ = ImVec2(static_cast<float>(e.button.x), static_cast<float>(e.button.y));
@@ -68,9 +76,19 @@ void EventFeed::note(const SDL_Event& e) {
 void EventFeed::take_frame(const std::function<void(const SDL_Event&)>& handle) {
     std::fill(std::begin(button_changed_), std::end(button_changed_), false);
     any_button_changed_ = false;
+    moved_ = false;
     keys_changed_.clear();
-    while (!queue_.empty() && !must_wait(queue_.front())) {
+    while (!queue_.empty()) {
         const SDL_Event e = queue_.front();
+        if (e.type == SDL_MOUSEBUTTONDOWN &&
+            (static_cast<float>(e.button.x) != pos_.x || static_cast<float>(e.button.y) != pos_.y)) {
+            // A press somewhere the pointer is not (no motion event took it there): the
+            // pointer goes there in this frame, the press comes in the next (see must_wait).
+            pos_ = ImVec2(static_cast<float>(e.button.x), static_cast<float>(e.button.y));
+            moved_ = true;
+            break;
+        }
+        if (must_wait(e)) break;
         queue_.pop_front();
         note(e);
         handle(e);

@@ -11,8 +11,8 @@
 // event put it, its buttons as the last button events left them. And a frame takes the queued
 // events in order only up to the first one that would undo or blur what the same frame already
 // did — the release of a button or key pressed in it, a second press after a release, a move
-// after a click — and leaves the rest for the next frame, so that every press is seen for at
-// least one frame, at the place it happened. (ImGui 1.87 later built the same in, calling it
+// after a click, a press after a move — and leaves the rest for the next frame, so that every
+// press is seen for at least one frame, at the place it happened, over what was hovered there. (ImGui 1.87 later built the same in, calling it
 // input trickling.)
 #pragma once
 
@@ -52,6 +52,7 @@ class EventFeed {
     // This frame so far.
     bool button_changed_[3] = {false, false, false};
     bool any_button_changed_ = false;
+    bool moved_ = false;  // the pointer moved in this frame
     std::vector<SDL_Scancode> keys_changed_;
 };
 

@@ -218,6 +218,7 @@ void draw_fold_right(Session& s) {
     ImGuiWindow* window = ImGui::GetCurrentWindow();
     const ImRect bar = window->TitleBarRect();
     const ImVec2 keep = ImGui::GetCursorScreenPos();
+    const ImVec2 extent = window->DC.CursorMaxPos;  // the button is not part of the content
     const float w = ImGui::CalcTextSize("»").x + ImGui::GetStyle().FramePadding.x * 2;
     ImGui::PushClipRect(bar.Min, bar.Max, false);
     ImGui::SetCursorScreenPos(
@@ -228,6 +229,7 @@ void draw_fold_right(Session& s) {
         ImGui::SetTooltip("Fold the pseudocode, variables and events: more room for the picture  (])");
     ImGui::PopClipRect();
     ImGui::SetCursorScreenPos(keep);
+    window->DC.CursorMaxPos = extent;
 }
 
 }  // namespace
