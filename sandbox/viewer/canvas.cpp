@@ -362,11 +362,9 @@ void draw_canvas(Session& s, bool interactive) {
     }
     const Scene& scene = s.scene();
     Box area = canvas;
-    const std::vector<ViewSlot> first = layout_views(scene, area);
-    const bool three = scene.has_3d();
-    const bool world = std::any_of(first.begin(), first.end(),
-                                   [](const ViewSlot& v) { return v.kind == ViewKind::World2d; });
-    area.min.y += draw_title(dl, canvas, make_title(s, interactive, three, world), s.fonts, record);
+    area.min.y +=
+        draw_title(dl, canvas, make_title(s, interactive, scene.has_3d(), shows_world(scene)),
+                   s.fonts, record);
     const std::vector<ViewSlot> views = layout_views(scene, area);
     if (record)
         for (const ViewSlot& v : views) record->panels.push_back({v.kind, v.box, v.box});

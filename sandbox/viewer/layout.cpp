@@ -56,6 +56,10 @@ double height(const Box& b) {
 
 }  // namespace
 
+bool shows_world(const Scene& scene) {
+    return scene.has_2d() || !scene.handles.empty() || (!scene.has_3d() && scene.panels.empty());
+}
+
 std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double gap) {
     std::vector<ViewSlot> mains, panels;
     const bool three = scene.has_3d();

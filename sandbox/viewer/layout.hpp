@@ -30,6 +30,10 @@ struct ViewSlot {
     Box box;
 };
 
+// Whether the scene shows the 2D world: when it has 2D content or handles, or when nothing else
+// would be shown.
+bool shows_world(const Scene& scene);
+
 // The views of `scene` in `area` (the canvas below the title strip), `gap` pixels apart.
 std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double gap = 6);
 
