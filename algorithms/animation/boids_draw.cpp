@@ -5,8 +5,9 @@
 // separation circle when smaller, a thin line to each neighbour (to the neighbour's nearest
 // image in a wrapped world) and the rules it would steer by from this state as arrows from it,
 // each already weighted (w_s s, w_a a, w_c c, w_o o, w_b b), and their sum F dashed: the picture
-// shows the next step's steering, the narration the last one's numbers. Right: the polarisation
-// φ and the mean nearest-neighbour distance against time over the whole run's length.
+// shows the next step's steering, the narration the last one's numbers. Right, two charts against
+// t (s) over the whole run's length: the polarisation φ (0 to 1) and the mean nearest-neighbour
+// distance (from 0).
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -41,21 +42,6 @@ Polygon2 circle(glm::dvec2 c, double r, Style style, bool filled = false) {
         p.points.push_back(c + r * glm::dvec2(std::cos(a), std::sin(a)));
     }
     return p;
-}
-
-// A plotted series against the step index, at most kMaxPlotPoints points.
-Polygon2 series(const std::vector<double>& ys, double x0, double w, double steps, double y0,
-                double h, double top, Style style) {
-    Polygon2 line{{}, style, false, false};
-    const std::size_t stride = (ys.size() + kMaxPlotPoints - 1) / kMaxPlotPoints;
-    auto at = [&](std::size_t q) {
-        const double y = top > 0 ? std::clamp(ys[q] / top, 0.0, 1.0) : 0.0;
-        return glm::dvec2(x0 + w * double(q) / steps, y0 + h * y);
-    };
-    for (std::size_t q = 0; q < ys.size(); q += stride) line.points.push_back(at(q));
-    if ((ys.size() - 1) % stride != 0) line.points.push_back(at(ys.size() - 1));
-    if (line.points.size() == 1) line.points.push_back(line.points[0] + glm::dvec2(1e-3 * w, 0));
-    return line;
 }
 
 }  // namespace
@@ -163,29 +149,30 @@ void Boids::draw(const State& s, Scene& scene) {
                                  base + "0", base + "1"});
     }
 
-    // The flock's order against time, beside the world, over the whole run (a fixed frame).
-    const double gap = 0.1 * size.x, pw = 0.7 * size.y, ph = size.y;
-    const double x0 = hi.x + gap, y0 = lo.y;
-    scene.polygons.push_back(
-        {{{x0, y0}, {x0 + pw, y0}, {x0 + pw, y0 + ph}, {x0, y0 + ph}}, {Role::Construction, 1.0f}});
-    const double steps = double(in.steps);
-    scene.polygons.push_back(
-        series(s.polarisation, x0, pw, steps, y0, ph, 1.0, {Role::Active, 2.0f}));
-    double top = 0;
-    for (double d : s.nearest) top = std::max(top, d);
-    top = top > 0 ? 1.1 * top : 1;
-    scene.polygons.push_back(series(s.nearest, x0, pw, steps, y0, ph, top, {Role::Entering, 2.0f}));
-    // (Labels are centred on their point.)
-    scene.labels.push_back({{x0 + 0.5 * pw, y0 + ph + 0.14 * ph},
-                            "polarisation φ = " + num(s.polarisation.back(), 3) + "  (top = 1)",
-                            {Role::Active}});
-    scene.labels.push_back({{x0 + 0.5 * pw, y0 + ph + 0.06 * ph},
-                            "mean nearest distance = " + num(s.nearest.back(), 3) +
-                                "  (top = " + num(top, 3) + ")",
-                            {Role::Entering}});
-    scene.labels.push_back({{x0, y0 - 0.06 * ph}, "t = 0", {Role::Neutral}});
-    scene.labels.push_back(
-        {{x0 + pw, y0 - 0.06 * ph}, "t = " + num(steps * in.dt, 4), {Role::Neutral}});
+    // The step's subject: the focus boid with its perception circle.
+    const double reach = std::max(in.radius, 0.05 * big);
+    add_focus(scene, xf - glm::dvec2(reach), xf + glm::dvec2(reach));
+
+    // The flock's order against t over the whole run, in two charts beside the world (no
+    // titles: the y axes say what is plotted, and the room goes to the plots).
+    const double t_end = double(in.steps) * in.dt;
+    auto plot = [&](const std::vector<double>& ys, Axis y, Role role) {
+        Panel& chart = add_chart(scene, "", Axis{"t (s)", 0, t_end}, std::move(y));
+        chart.weight = 0.5;  // the two together 1 against the world's 1.5
+        std::vector<glm::dvec2> line;
+        const std::size_t stride = (ys.size() + kMaxPlotPoints - 1) / kMaxPlotPoints;
+        for (std::size_t q = 0; q < ys.size(); q += stride) line.push_back({double(q) * in.dt, ys[q]});
+        if ((ys.size() - 1) % stride != 0)
+            line.push_back({double(ys.size() - 1) * in.dt, ys.back()});
+        add_line(chart, std::move(line), {role, 2.0f});
+        chart.points.push_back({{double(ys.size() - 1) * in.dt, ys.back()}, "", {role}, 4.5f});
+    };
+    plot(s.polarisation,
+         Axis{"polarisation φ = " + num(s.polarisation.back(), 3) + "  (1: all aligned)", 0, 1},
+         Role::Active);
+    plot(s.nearest,
+         Axis{"mean nearest distance = " + num(s.nearest.back(), 3), 0, 0, false, true},
+         Role::Entering);
 }
 
 }  // namespace cg

@@ -803,7 +803,7 @@ TEST_CASE("boids: exam problems are one frame of one boid, answered by hand",
     CHECK(four > 50);
 }
 
-TEST_CASE("boids: the picture, the focus boid's view and the order plot", "[animation][boids]") {
+TEST_CASE("boids: the picture, the focus boid's view and the order charts", "[animation][boids]") {
     const Input in = worked();
     const auto s = Boids::start(in);
     cg::Scene scene;
@@ -830,6 +830,15 @@ TEST_CASE("boids: the picture, the focus boid's view and the order plot", "[anim
     CHECK(len(sum - F) < 1e-9);
     CHECK(len(F) / len(glm::dvec2(-2, 1.5)) > 0);
     CHECK(scene.handles.empty());  // no obstacles: nothing to drag
+    // The order against time: two charts over the run, φ from 0 to 1, the distance from 0.
+    REQUIRE(scene.panels.size() == 2);
+    CHECK(scene.panels[0].kind == cg::PanelKind::Chart);
+    CHECK(scene.panels[0].x.label == "t (s)");
+    CHECK(scene.panels[0].x.hi == Approx(in.steps * in.dt));
+    CHECK(scene.panels[0].y.hi == 1);
+    CHECK(scene.panels[1].y.include_zero);
+    for (const auto& p : scene.panels) CHECK(p.polygons.size() == 1);
+    CHECK(scene.focus2.size() == 1);
     // A limited field of view draws a wedge through the boid.
     Input narrow = in;
     narrow.fov = 90;
