@@ -1,4 +1,4 @@
-// Sections: [spec] [validate] [advance] [narrate] [plain] [draw]
+// Sections: [spec] [validate] [advance] [narrate] [plain]; the picture is in backface_cull_draw.cpp
 #include "hsr/backface_cull.hpp"
 
 #include <algorithm>
@@ -282,76 +282,6 @@ void BackfaceCull::step(State& s, StepInfo* info) {
         r.dots.push_back(d / len);
     }
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-void BackfaceCull::draw(const State& s, Scene& scene) {
-    // In 3D: each face filled by its verdict (kept green, culled faint grey, undecided faint,
-    // the one being decided orange), decided faces with their unit normals, the current face's
-    // N and V, and the viewer (the eye, or the viewing direction).
-    const auto& in = *s.in;
-    const int decided = static_cast<int>(s.r.culled.size());
-    const int current = s.last == Phase::Face && s.k > 0 ? s.k - 1 : -1;  // the face just decided
-    const bool finished = s.phase == Phase::Done;
-
-    glm::dvec3 lo = in.vertices[0], hi = in.vertices[0], mid{0, 0, 0};
-    for (const auto& p : in.vertices) lo = glm::min(lo, p), hi = glm::max(hi, p), mid += p;
-    mid /= static_cast<double>(in.vertices.size());
-    const double size = std::max(glm::length(hi - lo), 1e-9);
-
-    auto centroid = [&](const std::vector<int>& f) {
-        glm::dvec3 c{0, 0, 0};
-        for (int i : f) c += in.vertices[static_cast<std::size_t>(i)];
-        return c / static_cast<double>(f.size());
-    };
-    // Labels and normals only while they stay readable.
-    const bool small = in.faces.size() <= 40;
-
-    for (std::size_t k = 0; k < in.faces.size(); ++k) {
-        const auto& f = in.faces[k];
-        Face3 face;
-        for (int i : f) face.points.push_back(in.vertices[static_cast<std::size_t>(i)]);
-        const bool is_decided = static_cast<int>(k) < decided;
-        const bool culled = is_decided && s.r.culled[k];
-        Role role = Role::Neutral;
-        face.alpha = 0.08f;
-        if (is_decided) role = culled ? Role::Subject : Role::Kept, face.alpha = culled ? 0.12f : 0.45f;
-        if (static_cast<int>(k) == current) role = Role::Active, face.alpha = 0.6f;
-        face.style = {role, 1.5f};
-        scene.faces3.push_back(std::move(face));
-        if (!small) continue;
-        const glm::dvec3 c = centroid(f);
-        scene.labels3.push_back(
-            {c, face_name(static_cast<int>(k)) + (is_decided ? (culled ? " culled" : " kept") : ""),
-             {role}});
-        if (is_decided && static_cast<int>(k) != current)
-            scene.segments3.push_back({c, c + 0.15 * size * s.r.normals[k], "",
-                                       {culled ? Role::Subject : Role::Kept, 1.5f}, true});
-    }
-    if (in.vertices.size() <= 60)
-        for (std::size_t i = 0; i < in.vertices.size(); ++i)
-            scene.points3.push_back({in.vertices[i], std::to_string(i), {Role::Neutral}, 3.0f});
-
-    // The current face's normal, from its centroid, and its view vector.
-    if (current >= 0 && !finished) {
-        const auto& f = in.faces[static_cast<std::size_t>(current)];
-        const glm::dvec3 c = centroid(f);
-        const glm::dvec3 u = s.r.normals[static_cast<std::size_t>(current)];
-        scene.segments3.push_back({c, c + 0.3 * size * u, "N", {Role::Active, 3.0f}, true});
-        const glm::dvec3 p0 = in.vertices[static_cast<std::size_t>(f[0])];
-        if (in.perspective)
-            scene.segments3.push_back({in.eye, p0, "V", {Role::Window, 1.5f, true}, true});
-    }
-    // The viewer.
-    if (in.perspective) {
-        scene.points3.push_back({in.eye, "eye " + num(in.eye, 4), {Role::Window}, 6.0f});
-    } else {
-        const glm::dvec3 d = glm::normalize(in.view_dir);
-        scene.segments3.push_back({mid - 0.9 * size * d, mid - 0.45 * size * d,
-                                   "view direction " + num(in.view_dir, 4), {Role::Window, 2.5f},
-                                   true});
-    }
 }
 
 }  // namespace cg
