@@ -620,7 +620,18 @@ TEST_CASE("bvh: the picture — boxes by depth, the node in hand, the ray, the h
     cg::Scene pic;
     Bvh::draw(s, pic);
     CHECK(pic.has_3d());
-    CHECK(pic.has_2d());  // the tree
+    // The tree is a diagram panel of its own, not drawn into the world: the root, made now.
+    CHECK(!pic.has_2d());
+    REQUIRE(pic.panels.size() == 1);
+    CHECK(pic.panels[0].kind == cg::PanelKind::Image);
+    REQUIRE(pic.panels[0].points.size() == s.r.nodes.size());
+    CHECK(pic.panels[0].points[0].style.role == cg::Role::Active);
+    REQUIRE(pic.panels[0].legend.size() == 1);
+    CHECK(pic.panels[0].legend[0].style.role == cg::Role::Active);
+    // Four spheres on a line with the ray: seen face-on, along z.
+    CHECK(pic.view3.look == dvec3(0, 0, -1));
+    CHECK(pic.view3.orthographic);
+    CHECK(pic.focus3.size() == 1);
     int active_faces = 0, split_plane = 0;
     for (const auto& f : pic.faces3) {
         if (f.style.role == cg::Role::Active && f.points.size() == 4 && f.outline) ++active_faces;
@@ -649,6 +660,13 @@ TEST_CASE("bvh: the picture — boxes by depth, the node in hand, the ray, the h
         hit |= p.style.role == cg::Role::Kept && p.p == dvec3(-1, 0, 0);
     CHECK(pruned_box);
     CHECK(hit);
+    // The tree's key names what its colours mean while tracing; node 4, pruned, is red in it.
+    REQUIRE(pic.panels.size() == 1);
+    CHECK(pic.panels[0].legend.size() == 4);
+    bool red_four = false;
+    for (const auto& l : pic.panels[0].labels)
+        red_four |= l.text == "4" && l.style.role == cg::Role::Discarded;
+    CHECK(red_four);
     // Sphere 0 green, the rest grey.
     for (const auto& l : pic.labels3)
         if (l.text == "0") CHECK(l.style.role == cg::Role::Kept);
