@@ -514,8 +514,16 @@ TEST_CASE("image-morph: the narration and the picture", "[animation][image-morph
     auto s = ImageMorph::start(worked());
     cg::Scene empty;
     ImageMorph::draw(s, empty);
-    CHECK(empty.grids.size() == 6);
-    CHECK(empty.points.empty());
+    // Six image panels, titled, nothing on the world's grid.
+    REQUIRE(empty.panels.size() == 6);
+    CHECK_FALSE(empty.has_2d());
+    for (const auto& p : empty.panels) {
+        CHECK(p.kind == cg::PanelKind::Image);
+        CHECK(p.grids.size() == 1);
+        CHECK(p.points.empty());
+    }
+    CHECK(empty.panels[0].title == "A (its lines)");
+    CHECK(empty.focus2.empty());
     // Frame 1 (α = 0) and its summary, then row 0 and row 1 of frame 2 (α = ½).
     cg::StepInfo info;
     for (int k = 0; k < 5 + 2; ++k) ImageMorph::step(s, &info);
@@ -525,15 +533,26 @@ TEST_CASE("image-morph: the narration and the picture", "[animation][image-morph
     CHECK(info.narration.find("C = (1 − α)·200 + α·100 = 150") != std::string::npos);
     cg::Scene scene;
     ImageMorph::draw(s, scene);
-    REQUIRE(scene.grids.size() == 6);
+    REQUIRE(scene.panels.size() == 6);
     // The morph panel: rows 0 and 1 made (the top two rows of the grid), the rest empty.
-    const auto& morph = scene.grids[2];
-    CHECK(morph.rgba[3 * 4 + 2] != 0);   // row 0, column 2
-    CHECK(morph.rgba[0 * 4 + 2] == 0);   // row 3 not made yet
-    REQUIRE(scene.points.size() == 3);
-    CHECK(scene.points[0].label == "X");
+    const auto& morph = scene.panels[2].grids[0];
+    auto grey = [](std::uint32_t c) { return c >> 24 == ((c >> 8) & 0xff); };
+    CHECK(grey(morph.rgba[3 * 4 + 2]));    // row 0, column 2: a grey value
+    CHECK(!grey(morph.rgba[0 * 4 + 2]));   // row 3 not made yet: tinted, no grey
+    // X in the morph, its sources X'_A in A and X'_B in B; the row just made is the focus.
+    REQUIRE(scene.panels[2].points.size() == 1);
+    CHECK(scene.panels[2].points[0].label == "X");
+    REQUIRE(scene.panels[0].points.size() == 1);
+    CHECK(scene.panels[0].points[0].label == "X'_A");
+    REQUIRE(scene.panels[1].points.size() == 1);
+    CHECK(scene.panels[1].points[0].label == "X'_B");
+    REQUIRE(scene.focus2.size() == 1);
+    CHECK(scene.focus2[0].panel == 2);
+    CHECK(scene.focus2[0].lo == glm::dvec2(0, 2));  // row 1 from the top of 4: cells y 2..3
+    CHECK(scene.focus2[0].hi == glm::dvec2(4, 3));
     int arrows = 0;
-    for (const auto& g : scene.segments) arrows += g.arrow;
+    for (const auto& p : scene.panels)
+        for (const auto& g : p.segments) arrows += g.arrow;
     CHECK(arrows == 5);  // A's line, B's line, the interpolated one on three panels
     ImageMorph::step(s, &info);
     ImageMorph::step(s, &info);
