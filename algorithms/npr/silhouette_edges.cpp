@@ -1,4 +1,5 @@
-// Sections: [spec] [validate] [advance] [narrate] [plain] [draw]
+// Sections: [spec] [validate] [advance] [narrate] [plain]; the picture is in
+// silhouette_edges_draw.cpp
 #include "npr/silhouette_edges.hpp"
 
 #include <algorithm>
@@ -249,63 +250,6 @@ void SilhouetteEdges::step(State& s, StepInfo* info) {
     std::sort(r.silhouette.begin(), r.silhouette.end());
     std::sort(r.boundary.begin(), r.boundary.end());
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-void SilhouetteEdges::draw(const State& s, Scene& scene) {
-    // Front faces filled with their toon band's colour, back faces faint grey (not yet
-    // classified: fainter still); silhouette edges thick magenta (width 5), boundary
-    // edges dashed; the edge being decided orange; the eye.
-    const auto& in = *s.in;
-    const auto& m = in.mesh;
-    const auto colours = ToonShading::default_colours(static_cast<int>(in.thresholds.size()) + 1);
-    const glm::dvec3 l = unit(in.light);
-    const int classified = static_cast<int>(s.r.front.size());
-    const bool small = m.faces.size() <= 24;
-    for (std::size_t k = 0; k < m.faces.size(); ++k) {
-        const auto& f = m.faces[k];
-        Face3 face;
-        for (int i : f) face.points.push_back(m.vertices[static_cast<std::size_t>(i)]);
-        face.outline = small;
-        if (static_cast<int>(k) >= classified) {
-            face.style = {Role::Neutral, 1.0f};
-            face.alpha = 0.06f;
-        } else if (s.r.front[k]) {
-            const double d = std::max(0.0, glm::dot(unit(npr::newell(m.vertices, f)), l));
-            const int b = ToonShading::band_of(d, in.thresholds);
-            face.style = {Role::Subject, 1.0f, false, pack_rgba(colours[static_cast<std::size_t>(b)])};
-            face.alpha = 1.0f;
-        } else {
-            face.style = {Role::Subject, 1.0f};
-            face.alpha = 0.15f;
-        }
-        scene.faces3.push_back(std::move(face));
-    }
-    auto P = [&](int i) { return m.vertices[static_cast<std::size_t>(i)]; };
-    // Magenta rather than a cartoon's black: it must stand out against the darkest band too.
-    for (const auto& e : s.r.silhouette) scene.segments3.push_back({P(e[0]), P(e[1]), "", {Role::Leaving, 5.0f}});
-    for (const auto& e : s.r.boundary)
-        scene.segments3.push_back({P(e[0]), P(e[1]), "", {Role::Window, 2.0f, true}});
-    if (s.last == Phase::Edge && s.phase != Phase::Done) {
-        const int k = s.phase == Phase::Edge ? s.k - 1 : static_cast<int>(s.edges->size()) - 1;
-        const Edge& e = (*s.edges)[static_cast<std::size_t>(k)];
-        scene.segments3.push_back({P(e.a), P(e.b), small ? edge_name(e.a, e.b) : "", {Role::Active, 6.0f}});
-    }
-    if (s.last == Phase::Face && s.phase != Phase::Done && classified > 0) {
-        const auto& f = m.faces[static_cast<std::size_t>(classified - 1)];
-        const glm::dvec3 p0 = P(f[0]);
-        scene.segments3.push_back({in.eye, p0, "P_0 − E", {Role::Window, 1.5f, true}, true});
-        Face3 o;
-        for (int i : f) o.points.push_back(P(i));
-        o.style = {Role::Active, 3.0f};
-        o.alpha = 0.0f;
-        scene.faces3.push_back(std::move(o));
-    }
-    if (m.vertices.size() <= 12)
-        for (std::size_t i = 0; i < m.vertices.size(); ++i)
-            scene.points3.push_back({m.vertices[i], "P" + std::to_string(i), {Role::Neutral}, 3.0f});
-    scene.points3.push_back({in.eye, "eye " + num(in.eye, 3), {Role::Window}, 6.0f});
 }
 
 }  // namespace cg

@@ -271,3 +271,31 @@ TEST_CASE("silhouette-edges: exam answers match the brute-force reference", "[np
     const cg::ExamProblem p = cg::make_exam(*registry.find("silhouette-edges"), 3);
     CHECK(p.answers == std::vector<std::string>{"silhouette"});
 }
+
+TEST_CASE("silhouette-edges: the picture — seen from beside the eye, framed on the step's face or edge",
+          "[npr][silhouette]") {
+    auto s = SilhouetteEdges::start(with_eye(cube(), {5, 4, 6}));
+    SilhouetteEdges::step(s, nullptr);  // the first face
+    cg::Scene face;
+    SilhouetteEdges::draw(s, face);
+    // Not along the line of sight: from there the eye would sit on the cube.
+    const glm::dvec3 sight = glm::normalize(glm::dvec3(5, 4, 6) - glm::dvec3(1));
+    CHECK(glm::dot(-face.view3.look, sight) < 0.9);
+    REQUIRE(face.focus3.size() == 1);
+    CHECK(face.focus3[0].hi.z >= 6);  // the eye is in the frame with the face
+    bool normal = false, to_face = false;
+    for (const auto& seg : face.segments3) {
+        normal = normal || (seg.label == "N̂" && seg.min_pixels >= 30);
+        to_face = to_face || seg.label == "P₀ − E";
+    }
+    CHECK(normal);
+    CHECK(to_face);
+    while (s.phase == SilhouetteEdges::Phase::Face) SilhouetteEdges::step(s, nullptr);
+    SilhouetteEdges::step(s, nullptr);  // the first edge
+    cg::Scene edge;
+    SilhouetteEdges::draw(s, edge);
+    REQUIRE(edge.focus3.size() == 1);
+    int active = 0;
+    for (const auto& seg : edge.segments3) active += seg.style.role == cg::Role::Active;
+    CHECK(active == 1);
+}
