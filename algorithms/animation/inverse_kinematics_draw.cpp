@@ -4,8 +4,8 @@
 // arm shows both poses once they are known, the one taken solid. CCD shows the joint being turned
 // (orange) with u = joint→end and v = joint→target; the Jacobian methods show e = end→target and
 // the columns J_i drawn from the end effector (where joint i alone would move it, per radian,
-// scaled together). Iterative methods plot log₁₀ |e| against the update number beside the chain
-// (on the 2D pane next to the 3D canvas for a 3D chain).
+// scaled together). Iterative methods chart |e| against the update number on a log axis beside
+// the chain, with the tolerance. A 3D chain is framed with its target.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -35,43 +35,36 @@ void circle(Scene& scene, glm::dvec2 c, double r, Role role) {
     scene.polygons.push_back(std::move(poly));
 }
 
-// log₁₀ |e| against the update number, in the box [x0, x0 + w] × [y0, y0 + h].
-void error_plot(const IK::State& s, Scene& scene, double x0, double y0, double w, double h) {
+// |e| against the update number, in a chart with a logarithmic |e| axis (whole decades from
+// below the tolerance to above the start), the tolerance dashed green.
+void error_chart(const IK::State& s, Scene& scene) {
     const IK::Input& in = *s.in;
-    const std::size_t n = in.lengths.size();
-    const double total = double(in.method == IK::Method::CCD ? std::size_t(in.iterations) * n
-                                                             : std::size_t(in.iterations));
-    const double span = std::max(total, double(s.history.size() - 1));
+    const bool ccd = in.method == IK::Method::CCD;
     const double floor_e = 1e-16 * std::max(1.0, s.size);
     auto lg = [&](double e) { return std::log10(std::max(e, floor_e)); };
     double lo = lg(in.tolerance), hi = lo;
     for (double e : s.history) lo = std::min(lo, lg(e)), hi = std::max(hi, lg(e));
-    lo = std::floor(lo) - 0.5;
-    hi = std::ceil(hi) + 0.5;
-    auto at = [&](double k, double e) {
-        return glm::dvec2(x0 + w * k / std::max(1.0, span), y0 + h * (lg(e) - lo) / (hi - lo));
-    };
-    scene.polygons.push_back(
-        {{{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}}, {Role::Construction, 1.0f}});
-    Polygon2 line{{}, {Role::Active, 2.0f}, false, false};
+    // The updates so far (the run stops at the tolerance, usually long before its budget).
+    const std::size_t done = s.history.size() - 1;
+    const double span = std::max(1.0, double(done));
+    Panel& chart = add_chart(
+        scene,
+        "|e| = " + num(std::max(s.history.back(), floor_e), 3) + (ccd ? ", update " : ", iteration ") +
+            std::to_string(done),
+        Axis{ccd ? "joint updates" : "iterations", 0, span},
+        Axis{"|e| (log)", std::pow(10.0, std::floor(lo - 0.25)), std::pow(10.0, std::ceil(hi + 0.25)),
+             true});
+    std::vector<glm::dvec2> line;
     const std::size_t stride = (s.history.size() + kMaxPlotPoints - 1) / kMaxPlotPoints;
-    for (std::size_t q = 0; q < s.history.size(); q += stride)
-        line.points.push_back(at(double(q), s.history[q]));
-    if ((s.history.size() - 1) % stride != 0)
-        line.points.push_back(at(double(s.history.size() - 1), s.history.back()));
-    if (line.points.size() == 1) line.points.push_back(line.points[0] + glm::dvec2(1e-3 * w, 0));
-    scene.polygons.push_back(std::move(line));
-    const double yt = at(0, in.tolerance).y;
-    scene.segments.push_back(
-        {{x0, yt}, {x0 + w, yt}, "tolerance", {Role::Kept, 1.0f, true}, false});
-    const double pad = 0.06 * h;
-    scene.labels.push_back({{x0, y0 + h + pad},
-                            "log10 |e| = " + num(lg(s.history.back()), 3) + " after " +
-                                std::to_string(s.history.size() - 1) +
-                                (in.method == IK::Method::CCD ? " joint updates" : " iterations"),
-                            {Role::Neutral}});
-    scene.labels.push_back({{x0 + w + pad, y0 + h - pad}, num(hi, 3), {Role::Neutral}});
-    scene.labels.push_back({{x0 + w + pad, y0 + pad}, num(lo, 3), {Role::Neutral}});
+    auto point = [&](std::size_t q) {
+        return glm::dvec2(double(q), std::max(s.history[q], floor_e));
+    };
+    for (std::size_t q = 0; q < s.history.size(); q += stride) line.push_back(point(q));
+    if ((s.history.size() - 1) % stride != 0) line.push_back(point(s.history.size() - 1));
+    add_line(chart, {{0, in.tolerance}, {span, in.tolerance}}, {Role::Kept, 1.0f, true},
+             "tolerance " + num(in.tolerance, 3));
+    add_line(chart, std::move(line), {Role::Active, 2.0f}, "|e|, end to target");
+    chart.points.push_back({point(done), "", {Role::Active}, 4.5f});
 }
 
 }  // namespace
@@ -157,10 +150,7 @@ void IK::draw(const State& s, Scene& scene) {
                                               true});
             scene.segments.push_back({end, xy(in.target), "e", {Role::Leaving, 2.0f, true}, true});
         }
-        if (iterative) {
-            const double size = 1.3 * reach;
-            error_plot(s, scene, in.base.x + 1.25 * reach, in.base.y - 0.5 * size, size, size);
-        }
+        if (iterative) error_chart(s, scene);
         return;
     }
 
@@ -211,7 +201,12 @@ void IK::draw(const State& s, Scene& scene) {
                                            true});
         scene.segments3.push_back({s.p[n], in.target, "e", {Role::Leaving, 2.0f, true}, true});
     }
-    if (iterative) error_plot(s, scene, 0, 0, 5, 6);
+    if (iterative) error_chart(s, scene);
+    // The camera frames the chain as it is now and the target.
+    glm::dvec3 lo = s.p[0], hi = lo;
+    for (const glm::dvec3& p : s.p) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    if (in.has_target) lo = glm::min(lo, in.target), hi = glm::max(hi, in.target);
+    add_focus(scene, lo, hi);
 }
 
 }  // namespace cg

@@ -631,12 +631,22 @@ TEST_CASE("inverse-kinematics: the picture shows the chain, the target and the v
     int columns = 0;
     for (const auto& seg : sd.segments) columns += seg.arrow && seg.label.rfind("J", 0) == 0;
     CHECK(columns == 4);
-    // A 3D chain goes to the 3D canvas, its error plot to the 2D pane.
+    // The iterative methods chart |e| on a log axis with the tolerance, beside the chain.
+    REQUIRE(sd.panels.size() == 1);
+    CHECK(sd.panels[0].kind == cg::PanelKind::Chart);
+    CHECK(sd.panels[0].y.log);
+    CHECK(sd.panels[0].y.lo <= in.tolerance);
+    REQUIRE(sd.panels[0].legend.size() == 2);
+    CHECK(sd.panels[0].legend[0].style.role == cg::Role::Kept);  // the tolerance
+    CHECK(sd.panels[0].polygons[1].points.size() == d.history.size());
+    // A 3D chain goes to the 3D canvas, framed with its target; its error chart beside it.
     const auto& p3 = lesson().presets[6];
     auto s3 = IK::start(cg::test::input_of<IK>("inverse-kinematics", p3.input));
     IK::step(s3, nullptr);
     cg::Scene c3;
     IK::draw(s3, c3);
     CHECK(c3.has_3d());
-    CHECK(c3.has_2d());
+    CHECK_FALSE(c3.has_2d());
+    CHECK(c3.panels.size() == 1);
+    CHECK(c3.focus3.size() == 1);
 }
