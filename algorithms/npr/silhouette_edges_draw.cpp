@@ -5,6 +5,7 @@
 // testing edges: the edge orange and its two faces outlined. The view is from the side of the
 // eye's line of sight (from the eye itself the eye would sit on the mesh and the loop would be
 // only an outline), and the camera is framed on the face and the eye, or on the edge's faces.
+// The finished silhouette is seen from the eye: the outline a cartoon renderer draws.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -117,12 +118,17 @@ void SilhouetteEdges::draw(const State& s, Scene& scene) {
         for (std::size_t i = 0; i < m.vertices.size(); ++i)
             scene.points3.push_back(
                 {m.vertices[i], "P" + std::to_string(i), {Role::Neutral}, 3.0f, -10});
-    scene.points3.push_back({in.eye, "eye", {Role::Window}, 6.0f});
-
-    // Seen from the side of the line of sight, a little from above.
     const glm::dvec3 up{0, 1, 0};
     glm::dvec3 e = unit(in.eye - mid);
     if (glm::length(e) == 0) e = {0, 0, 1};
+    if (s.phase == Phase::Done) {
+        // The result as the eye sees it: the silhouette is the outline.
+        scene.view3 = {-e, glm::length(glm::cross(up, e)) < 1e-6 ? glm::dvec3(0, 0, -1) : up,
+                       false};
+        return;
+    }
+    scene.points3.push_back({in.eye, "eye", {Role::Window}, 6.0f});
+    // While classifying, seen from the side of the line of sight, a little from above.
     glm::dvec3 side = glm::cross(up, e);
     side = glm::length(side) < 1e-6 ? glm::dvec3(1, 0, 0) : unit(side);
     const glm::dvec3 from = unit(0.75 * e + 0.6 * side + 0.3 * up);
