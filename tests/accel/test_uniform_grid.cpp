@@ -804,6 +804,24 @@ TEST_CASE("uniform-grid: the picture — the lattice, the cells visited, the tes
     int lattice2 = 0;
     for (const auto& g : scene.segments) lattice2 += g.style.role == cg::Role::Construction;
     CHECK(lattice2 == 5 + 5);
+    // The cell's two exits, t_max_x and t_max_y, the nearer (the cell's t_exit) orange, and how
+    // far apart the plane crossings come.
+    int exits = 0, nearer = 0;
+    for (const auto& p : scene.points) {
+        if (p.label.rfind("t_max_", 0) != 0) continue;
+        ++exits;
+        if (p.style.role != cg::Role::Active) continue;
+        ++nearer;
+        CHECK(p.label.substr(p.label.find(" = ") + 3) == cg::num(s.w.t_exit, 4));
+    }
+    CHECK(exits == 2);
+    CHECK(nearer == 1);
+    bool apart = false;
+    for (const auto& l : scene.labels)
+        apart |= l.text.find("t_delta_x = " + cg::num(s.w.t_delta.x)) != std::string::npos &&
+                 l.text.find("t_delta_y = " + cg::num(s.w.t_delta.y)) != std::string::npos;
+    CHECK(apart);
+    CHECK(scene.focus3.size() == 1);
     int orange_circles = 0;
     for (const auto& g : scene.segments3) orange_circles += g.style.role == cg::Role::Active;
     CHECK(orange_circles == 3 * 32);
