@@ -647,14 +647,22 @@ void FractalTerrain::draw(const State& s, Scene& scene) {
         f.points = {pos(i0, j0), pos(i1, j1), pos(i2, j2)};
         const double mean = (f.points[0].y + f.points[1].y + f.points[2].y) / 3;
         f.style.rgba = height_colour((mean - lo) / range);
-        f.alpha = 0.85f;
+        // Lighter while a point is displaced: the new point may lie under the coarse face.
+        f.alpha = s.last == Last::Point && !finished ? 0.55f : 0.85f;
         f.outline = cells <= 512;
         scene.faces3.push_back(std::move(f));
     });
     const bool small = fresh.size() <= 256;
     for (const Visit& v : fresh)
         if (small) scene.points3.push_back({pos(v.i, v.j), "", {Role::Kept}, 3.5f});
-    // The point just displaced: its neighbours, their average and the offset.
+    double extent = 0;
+    for (const auto& f : scene.faces3)
+        for (const auto& q : f.points)
+            extent = std::max({extent, std::fabs(q.x), std::fabs(q.y), std::fabs(q.z)});
+    scene.extent3 = extent > 0 ? 1.2 * extent : 1;
+    // The point just displaced: its neighbours, their average and the offset. The camera frames
+    // them with some of the terrain around; the new height's label is placed first, the
+    // neighbours' heights last.
     if (s.last == Last::Point && !finished) {
         const Visit& v = s.done_at;
         std::array<int, 4> nb{};
@@ -663,21 +671,22 @@ void FractalTerrain::draw(const State& s, Scene& scene) {
         const glm::dvec3 base = position(in, N, v.i, v.j, s.avg);
         std::array<std::array<int, 2>, 4> ij{};
         fractal::neighbour_points(m, N, v, ij);
+        glm::dvec3 box_lo = glm::min(p, base), box_hi = glm::max(p, base);
         for (int k = 0; k < count; ++k) {
             const glm::dvec3 q = pos(ij[k][0], ij[k][1]);
-            scene.points3.push_back({q, num(s.h[nb[k]], 4), {Role::Entering}, 5.0f});
+            box_lo = glm::min(box_lo, q), box_hi = glm::max(box_hi, q);
+            scene.points3.push_back({q, num(s.h[nb[k]], 3), {Role::Entering}, 5.0f, -1});
             scene.segments3.push_back({q, base, "", {Role::Construction, 1.0f, true}});
         }
-        scene.points3.push_back({base, "avg " + num(s.avg, 4), {Role::Construction}, 4.0f});
-        scene.segments3.push_back({base, p, "r = " + num(s.offset, 3), {Role::Active, 2.5f}, true});
-        scene.points3.push_back({p, "h = " + num(s.h[fractal::index(m, N, v.i, v.j)], 4),
-                                 {Role::Active}, 6.0f});
+        scene.points3.push_back({base, "avg " + num(s.avg, 3), {Role::Construction}, 4.0f});
+        scene.segments3.push_back(
+            {base, p, "r = " + num(s.offset, 3), {Role::Active, 2.5f}, true, 0, 5});
+        scene.points3.push_back({p, "h = " + num(s.h[fractal::index(m, N, v.i, v.j)], 3),
+                                 {Role::Active}, 6.0f, 10});
+        const glm::dvec3 c = (box_lo + box_hi) / 2.0;
+        const glm::dvec3 half = glm::max((box_hi - box_lo) / 2.0, glm::dvec3(0.45 * extent));
+        add_focus(scene, c - half, c + half);
     }
-    double extent = 0;
-    for (const auto& f : scene.faces3)
-        for (const auto& q : f.points)
-            extent = std::max({extent, std::fabs(q.x), std::fabs(q.y), std::fabs(q.z)});
-    scene.extent3 = extent > 0 ? 1.2 * extent : 1;
 }
 
 }  // namespace cg
