@@ -1,4 +1,5 @@
-// Sections: [spec] [validate] [the arithmetic] [step] [narrate] [draw]
+// Sections: [spec] [validate] [the arithmetic] [step] [narrate]; the picture is in
+// vertex_normals_draw.cpp
 #include "affine/vertex_normals.hpp"
 
 #include <algorithm>
@@ -397,88 +398,6 @@ void VertexNormals::narrate(const State& s, StepInfo& info) {
         info.vars.push_back(
             {kVar[w], vs.normal[w] ? Value{vec(*vs.normal[w])} : Value{std::string("undefined")}});
     }
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-void VertexNormals::draw(const State& s, Scene& scene) {
-    const Prepared& p = *s.in;
-    const auto& P = p.vertices;
-    // Arrows a fraction of the mesh's mean edge length, so they read at any scale.
-    double edges = 0;
-    long long n_edges = 0;
-    for (const auto& c : p.corners)
-        for (std::size_t i = 0; i < c.size() && n_edges < 4096; ++i, ++n_edges)
-            edges += glm::length(P[c[(i + 1) % c.size()]] - P[c[i]]);
-    dvec3 lo = P[0], hi = P[0];
-    for (const auto& q : P) lo = glm::min(lo, q), hi = glm::max(hi, q);
-    double len = n_edges ? 0.6 * edges / double(n_edges) : 0.0;
-    if (!(len > 0)) len = std::max(0.25 * glm::length(hi - lo), 1.0);
-    const bool labels = P.size() <= 40;
-
-    const bool on_faces = s.vertex < 0;
-    for (std::size_t k = 0; k < p.corners.size(); ++k) {
-        const auto& c = p.corners[k];
-        Face3 f;
-        for (long long v : c) f.points.push_back(P[v]);
-        const bool current = on_faces && int(k) == s.face;
-        const bool around =
-            !on_faces && s.vertex >= 0 && std::find(c.begin(), c.end(), s.vertex) != c.end();
-        const bool worked = int(k) < static_cast<int>(s.faces.size());
-        const bool degenerate = worked && !s.faces[k].defined;
-        f.style.role = current      ? Role::Active
-                       : degenerate ? Role::Discarded
-                       : around     ? Role::Window
-                                    : Role::Subject;
-        f.alpha = current || around ? 0.45f : 0.25f;
-        scene.faces3.push_back(std::move(f));
-    }
-    // Face normals at the centroids of the faces worked out so far.
-    for (std::size_t k = 0; k < s.faces.size(); ++k) {
-        const FaceNormal& f = s.faces[k];
-        dvec3 c(0.0);
-        for (long long v : f.corners) c += P[v];
-        if (!f.corners.empty()) c /= double(f.corners.size());
-        const bool current = on_faces && int(k) == s.face;
-        if (!f.defined) {
-            if (current) scene.labels3.push_back({c, "no normal (area 0)", {Role::Discarded}});
-            continue;
-        }
-        scene.segments3.push_back({c,
-                                   c + len * f.normal,
-                                   labels ? "n" + fname(k).substr(1) : "",
-                                   {current ? Role::Active : Role::Neutral, current ? 3.f : 2.f},
-                                   true});
-    }
-    // The vertices, and their three normals once worked out.
-    static const Role kRole[3] = {Role::Entering, Role::Kept, Role::Leaving};
-    for (std::size_t v = 0; v < P.size(); ++v) {
-        const bool current = !on_faces && int(v) == s.vertex;
-        const bool focus = p.has_focus && p.focus_vertex == static_cast<long long>(v);
-        scene.points3.push_back({P[v],
-                                 labels || current ? vname(v) : "",
-                                 {current ? Role::Active : Role::Neutral},
-                                 current ? 7.f : 4.f});
-        if (static_cast<int>(v) >= static_cast<int>(s.vertices.size())) continue;
-        const VertexSums& vs = s.vertices[v];
-        for (int w = 0; w < 3; ++w) {
-            if (!vs.normal[w]) continue;
-            std::string label;
-            if (current) label = weighting_id(Weighting(w));
-            if (focus && int(p.focus_weighting) == w)
-                label = std::string(weighting_id(Weighting(w))) + " " + num(*vs.normal[w], 3);
-            scene.segments3.push_back({P[v],
-                                       P[v] + (1.2 * len) * *vs.normal[w],
-                                       label,
-                                       {kRole[w], current ? 3.f : 2.f},
-                                       true});
-        }
-        if (current && vs.faces.empty())
-            scene.labels3.push_back({P[v], "no faces: normal undefined", {Role::Discarded}});
-    }
-    scene.labels3.push_back({lo - dvec3(0, 0.3 * len, 0),
-                             "vertex normals: unweighted (teal), area (green), angle (magenta)",
-                             {Role::Neutral}});
 }
 
 }  // namespace cg
