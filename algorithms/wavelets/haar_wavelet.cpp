@@ -1,5 +1,5 @@
 // Sections: [transform] [compression] [patterns] [spec] [validate] [advance] [narrate]
-//           [result and compute] [draw]
+//           [result and compute]; the picture is in haar_wavelet_draw.cpp
 #include "wavelets/haar_wavelet.hpp"
 
 #include <algorithm>
@@ -119,6 +119,14 @@ void HaarWavelet::apply(const Input& in, const Pass& p, std::vector<double>& c) 
         if (!p.rows)
             for (int j = 0; j < p.len; ++j) c[std::size_t(j) * n + l] = line[j];
     }
+}
+
+std::vector<double> HaarWavelet::before_pass(const State& s, int p) {
+    std::vector<double> b = s.c;
+    Pass q = (*s.passes)[p];
+    q.inverse = !q.inverse;
+    apply(*s.in, q, b);
+    return b;
 }
 
 // ---- [compression] --------------------------------------------------------------------------
@@ -416,16 +424,6 @@ std::vector<double> line_of(const Input& in, const std::vector<double>& c, bool 
     return v;
 }
 
-// The array before pass p: the pass undone (or redone) on a copy, for the narration and the
-// picture only (the rounding of the round trip is far below what they print).
-std::vector<double> before_pass(const State& s, int p) {
-    std::vector<double> b = s.c;
-    Pass q = (*s.passes)[p];
-    q.inverse = !q.inverse;
-    HaarWavelet::apply(*s.in, q, b);
-    return b;
-}
-
 std::string h_text(const Input& in) {
     return in.normalised ? "√2" : "2";
 }
@@ -475,7 +473,7 @@ void narrate_pass(const State& s, StepInfo& info) {
     const Input& in = *s.in;
     const int idx = s.next - 1;
     const Pass& p = (*s.passes)[idx];
-    const std::vector<double> b = before_pass(s, idx);
+    const std::vector<double> b = HaarWavelet::before_pass(s, idx);
     const std::vector<double> before = line_of(in, b, p.rows, p.first, p.len);
     const std::vector<double> after = line_of(in, s.c, p.rows, p.first, p.len);
     const int half = p.len / 2;
@@ -544,7 +542,7 @@ void narrate_inverse(const State& s, StepInfo& info) {
     const Input& in = *s.in;
     const int idx = s.next - 1;
     const Pass& p = (*s.passes)[idx];
-    const std::vector<double> b = before_pass(s, idx);
+    const std::vector<double> b = HaarWavelet::before_pass(s, idx);
     const std::vector<double> before = line_of(in, b, p.rows, p.first, p.len);
     const std::vector<double> after = line_of(in, s.c, p.rows, p.first, p.len);
     info.event = "reconstruct";
@@ -682,264 +680,6 @@ HaarWavelet::Result HaarWavelet::compute(const Input& in) {
     r.reconstruction = std::move(c);
     r.relative_error = r.signal_norm > 0 ? r.l2_error / r.signal_norm : 0;
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-namespace {
-
-std::uint32_t grey(double g) {
-    const auto v = std::uint32_t(std::clamp(g, 0.0, 255.0));
-    return (v << 24) | (v << 16) | (v << 8) | 0xffu;
-}
-
-// How far each line's averages reach after the passes so far: a forward pass leaves len / 2^levels
-// averages on its lines, an inverse pass len.
-void averages_extent(const State& s, std::vector<int>& row_low, std::vector<int>& col_low) {
-    const int n = s.in->n;
-    row_low.assign(std::size_t(n), n);
-    col_low.assign(std::size_t(n), n);
-    for (int q = 0; q < s.next; ++q) {
-        const Pass& p = (*s.passes)[q];
-        auto& low = p.rows ? row_low : col_low;
-        for (int l = p.first; l < p.first + p.count; ++l)
-            low[l] = p.inverse ? p.len : p.len >> p.levels;
-    }
-}
-
-// ---- 1D: bar plots ----
-
-struct Plot {
-    double base = 0, scale = 1;
-};
-
-void bars(Scene& scene, const Input& in, const std::vector<double>& v, int averages, Plot pl,
-          const std::vector<double>* dropped_from, const std::string& title) {
-    const int n = int(v.size());
-    scene.segments.push_back(
-        {{0, pl.base}, {double(n), pl.base}, "", {Role::Construction, 1.0f}, false});
-    scene.labels.push_back({{n + 0.4, pl.base + 0.3}, title, {Role::Neutral}});  // to the right
-    for (int i = 0; i < n; ++i) {
-        const double x0 = i + 0.1, x1 = i + 0.9, y = pl.base + v[i] * pl.scale;
-        const Role role = i < averages ? Role::Kept : Role::Entering;
-        if (v[i] != 0)
-            scene.polygons.push_back(
-                {{{x0, pl.base}, {x1, pl.base}, {x1, y}, {x0, y}}, {role, 1.0f}, true, true});
-        if (dropped_from && (*dropped_from)[i] != 0 && v[i] == 0) {
-            const double yd = pl.base + (*dropped_from)[i] * pl.scale;
-            scene.polygons.push_back({{{x0, pl.base}, {x1, pl.base}, {x1, yd}, {x0, yd}},
-                                      {Role::Discarded, 1.5f, true},
-                                      true,
-                                      false});
-        }
-        if (n <= 16)
-            scene.labels.push_back(
-                {{i + 0.15, (v[i] >= 0 ? y + 0.15 : y - 0.45)}, num(v[i], 3), {role}});
-    }
-    (void)in;
-}
-
-void draw_1d(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const int n = in.n;
-    std::vector<int> row_low, col_low;
-    averages_extent(s, row_low, col_low);
-    const bool started = s.next > 0 || s.last != Phase::Forward || !s.coefficients.empty();
-    const bool threshold_now = s.last == Phase::Threshold && !s.compressed.empty();
-    std::vector<double> before;
-    int before_avg = n;
-    if (threshold_now) {
-        before = s.coefficients;
-        before_avg = 1;
-    } else if (s.next > 0 && (s.last == Phase::Forward || s.last == Phase::Inverse)) {
-        before = before_pass(s, s.next - 1);
-        const Pass& p = (*s.passes)[s.next - 1];
-        before_avg = p.inverse ? p.len / 2 : p.len;
-    } else {
-        before = in.data;
-    }
-    double vmax = 0;
-    for (double x : in.data) vmax = std::max(vmax, std::fabs(x));
-    for (double x : s.c) vmax = std::max(vmax, std::fabs(x));
-    for (double x : before) vmax = std::max(vmax, std::fabs(x));
-    const double H = std::max(2.0, n / 4.0);
-    const double scale = vmax > 0 ? H / vmax : 1;
-    const Plot top{2.6 * H + 1, scale}, bottom{0, scale};
-    const bool dropped = !s.compressed.empty() && in.compress != HaarWavelet::Compress::None &&
-                         s.last == Phase::Threshold;
-    std::string title_before = "x (the signal)", title_after = "c";
-    if (s.next > 0 && (s.last == Phase::Forward || s.last == Phase::Inverse)) {
-        const Pass& p = (*s.passes)[s.next - 1];
-        title_before = p.inverse ? "before undoing the level of length " + std::to_string(p.len)
-                                 : "before level " + std::to_string(s.next);
-        title_after = p.inverse ? "rebuilt: pairs s + d, s − d"
-                                : "after: averages (green), then details (teal)";
-    } else if (threshold_now) {
-        title_before = "coefficients";
-        title_after = "kept (dashed red: zeroed)";
-    } else if (s.last == Phase::Summary) {
-        title_after = "reconstruction (grey ticks: the signal)";
-    }
-    bars(scene, in, before, started ? before_avg : n, top, nullptr, title_before);
-    bars(scene, in, s.c, row_low[0], bottom, dropped ? &s.coefficients : nullptr, title_after);
-    if (s.last == Phase::Summary)  // the input as outlines over the reconstruction
-        for (int i = 0; i < n; ++i)
-            scene.segments.push_back({{i + 0.1, in.data[i] * scale},
-                                      {i + 0.9, in.data[i] * scale},
-                                      "",
-                                      {Role::Subject, 2.0f},
-                                      false});
-    // The pairs of this step: bracketed above, joined to what they became below.
-    if (s.next > 0 && (s.last == Phase::Forward || s.last == Phase::Inverse) && n <= 64) {
-        const Pass& p = (*s.passes)[s.next - 1];
-        const int half = p.len / 2;
-        for (int k = 0; k < half; ++k) {
-            const int a0 = p.inverse ? k : 2 * k, a1 = p.inverse ? half + k : 2 * k + 1;
-            const int b0 = p.inverse ? 2 * k : k, b1 = p.inverse ? 2 * k + 1 : half + k;
-            const double yb = top.base - H - 0.3;
-            if (!p.inverse)
-                scene.segments.push_back(
-                    {{a0 + 0.1, yb}, {a1 + 0.9, yb}, "", {Role::Active, 2.5f}, false});
-            if (n <= 32) {
-                const Style link{Role::Active, 1.0f, true};
-                const double yt = yb - 0.1, ybot = bottom.base + H + 0.2;
-                scene.segments.push_back({{a0 + 0.5, yt}, {b0 + 0.5, ybot}, "", link, true});
-                scene.segments.push_back({{a1 + 0.5, yt}, {b1 + 0.5, ybot}, "", link, true});
-            }
-        }
-    }
-}
-
-// ---- 2D: images ----
-
-void image(Scene& scene, const Input& in, const std::vector<double>& v, double x0,
-           const std::vector<int>* row_low, const std::vector<int>* col_low,
-           const std::vector<double>* coefficients) {
-    const int n = in.n;
-    double lo = 1e300, hi = -1e300;
-    for (double x : in.data) lo = std::min(lo, x), hi = std::max(hi, x);
-    // A cell holds an average when both its row's and its column's averages reach it (every
-    // cell of a plain image).
-    auto average = [&](int r, int c) {
-        return !row_low || (c < (*row_low)[r] && r < (*col_low)[c]);
-    };
-    double alo = lo, ahi = hi, dmax = 0;
-    if (row_low) {
-        alo = 1e300, ahi = -1e300;
-        for (int r = 0; r < n; ++r)
-            for (int c = 0; c < n; ++c) {
-                const double x = v[std::size_t(r) * n + c];
-                if (average(r, c))
-                    alo = std::min(alo, x), ahi = std::max(ahi, x);
-                else
-                    dmax = std::max(dmax, std::fabs(x));
-            }
-        if (!in.normalised) alo = std::min(alo, lo), ahi = std::max(ahi, hi);
-    }
-    const double a_scale = ahi > alo ? 255 / (ahi - alo) : 0;
-    const double d_scale = dmax > 0 ? 1 / dmax : 0;
-    PixelGrid2 g;
-    g.origin = {x0, 0};
-    g.width = g.height = n;
-    g.grid_lines = n <= 16;
-    g.rgba.resize(v.size());
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            const std::size_t at = std::size_t(r) * n + c;
-            const std::size_t cell = std::size_t(n - 1 - r) * n + c;  // row 0 at the top
-            std::uint32_t colour;
-            if (average(r, c)) {
-                colour = grey(a_scale > 0 ? (v[at] - alo) * a_scale : 128);
-            } else if (coefficients && (*coefficients)[at] != 0 && v[at] == 0) {
-                colour = 0xa08080ffu;  // zeroed: a reddish mid grey (0 is mid grey)
-            } else {  // details: mid grey ± √(|d| / max), to make small ones visible
-                const double t = std::sqrt(std::fabs(v[at]) * d_scale);
-                colour = grey(128 + (v[at] < 0 ? -127 : 127) * t);
-            }
-            g.rgba[cell] = colour;
-        }
-    scene.grids.push_back(std::move(g));
-}
-
-void rect(Scene& scene, double x0, double y0, double x1, double y1, Style style) {
-    scene.polygons.push_back({{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, style, true, false});
-}
-
-void draw_2d(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const int n = in.n;
-    const double gap = std::max(1.0, n / 6.0);
-    const double mid = n + gap, right = 2 * (n + gap);
-    std::vector<int> row_low, col_low;
-    averages_extent(s, row_low, col_low);
-    const bool inverse = s.last == Phase::Inverse || s.last == Phase::Summary;
-    image(scene, in, in.data, 0, nullptr, nullptr, nullptr);
-    const double below = -0.5 - n / 24.0;
-    scene.labels.push_back({{0, below}, "image x", {Role::Neutral}});
-    if (!inverse) {
-        image(scene, in, s.c, mid, &row_low, &col_low,
-              s.last == Phase::Threshold ? &s.coefficients : nullptr);
-        scene.labels.push_back(
-            {{mid, below},
-             in.mode == Mode::Standard ? "coefficients (standard)" : "coefficients (non-standard)",
-             {Role::Kept}});
-    } else {
-        // The coefficients the reconstruction starts from, and the reconstruction under way.
-        const std::vector<int> full_r(std::size_t(n), 1), full_c(std::size_t(n), 1);
-        image(scene, in, s.compressed, mid, &full_r, &full_c, &s.coefficients);
-        scene.labels.push_back({{mid, below}, "kept coefficients", {Role::Kept}});
-        image(scene, in, s.c, right, &row_low, &col_low, nullptr);
-        scene.labels.push_back(
-            {{right, below},
-             s.last == Phase::Summary ? "reconstruction" : "reconstruction under way",
-             {Role::Entering}});
-    }
-    // The band boundaries of the transform: where averages end and details begin.
-    const double ox = inverse ? right : mid;
-    const Style band{Role::Window, 1.0f};
-    for (int r = 0; r < n; ++r)
-        if (row_low[r] < n) {
-            const double x = ox + row_low[r];
-            scene.segments.push_back({{x, double(n - 1 - r)}, {x, double(n - r)}, "", band, false});
-        }
-    for (int c = 0; c < n; ++c)
-        if (col_low[c] < n) {
-            const double y = n - col_low[c];
-            scene.segments.push_back({{ox + c, y}, {ox + c + 1, y}, "", band, false});
-        }
-    // The lines of this step, outlined; the quadrants of a non-standard level named.
-    if (s.next > 0 && (s.last == Phase::Forward || s.last == Phase::Inverse)) {
-        const Pass& p = (*s.passes)[s.next - 1];
-        const double a = p.first, b = p.first + p.count;
-        if (p.rows)
-            rect(scene, ox, n - b, ox + p.len, n - a, {Role::Active, 2.5f});
-        else
-            rect(scene, ox + a, n - p.len, ox + b, n, {Role::Active, 2.5f});
-        if (in.mode == Mode::NonStandard && !p.rows && !p.inverse && p.len >= 4) {
-            const double h = p.len / 2.0;
-            scene.labels.push_back({{ox + 0.2, n - h / 2}, "averages", {Role::Kept}});
-            scene.labels.push_back({{ox + h + 0.2, n - h / 2}, "row details", {Role::Entering}});
-            scene.labels.push_back({{ox + 0.2, n - 1.5 * h}, "column details", {Role::Entering}});
-            scene.labels.push_back({{ox + h + 0.2, n - 1.5 * h}, "diagonal", {Role::Entering}});
-        }
-    }
-}
-
-}  // namespace
-
-// 1D: two bar plots — above, the vector before this step (the signal at first), its pairs
-// bracketed in orange; below, the vector after it, averages green and details teal, each pair
-// joined to the average and detail it became. Zeroed details are dashed red outlines at their
-// old height; at the end the input is drawn as grey ticks over the reconstruction.
-// 2D: the image, the coefficient image (averages in grey over their range, details as mid grey
-// ± √(|d| / max |d|) so that small ones show; zeroed ones reddish grey) with the band boundaries in
-// blue and this step's lines outlined, and during the reconstruction the kept coefficients
-// beside the image being rebuilt.
-void HaarWavelet::draw(const State& s, Scene& scene) {
-    if (s.in->mode == Mode::OneD)
-        draw_1d(s, scene);
-    else
-        draw_2d(s, scene);
 }
 
 }  // namespace cg

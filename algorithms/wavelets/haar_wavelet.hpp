@@ -132,6 +132,9 @@ struct HaarWavelet {
     // The pieces both use.
     static std::vector<Pass> plan(const Input& in);
     static void apply(const Input& in, const Pass& p, std::vector<double>& c);
+    // The array before pass p of s (the pass undone, or redone, on a copy of s.c), for the
+    // narration and the picture only (the round trip's rounding is far below what they print).
+    static std::vector<double> before_pass(const State& s, int p);
     // Zeroes the small coefficients of c in place; returns the predicted L2 error and sets the
     // counts and the cut.
     static double compress(const Input& in, std::vector<double>& c, long long& zeroed,

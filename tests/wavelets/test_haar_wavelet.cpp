@@ -558,23 +558,35 @@ TEST_CASE("haar-wavelet: exam problems are by-hand sized and answered by the ref
     CHECK(thresholded > 20);
 }
 
-TEST_CASE("haar-wavelet: the picture — bars in 1D, the coefficient image in 2D",
+TEST_CASE("haar-wavelet: the picture — bar charts in 1D, image panels in 2D",
           "[wavelets][haar-wavelet]") {
-    SECTION("1D: the pairs bracketed and joined; averages and details in two colours") {
+    SECTION("1D: the pairs bracketed; averages and details in two colours; one value scale") {
         auto s = HaarWavelet::start(signal({8, 4, 1, 3}));
         HaarWavelet::step(s, nullptr);
         cg::Scene scene;
         HaarWavelet::draw(s, scene);
-        int kept = 0, details = 0, active = 0;
-        for (const auto& p : scene.polygons) {
-            kept += p.style.role == cg::Role::Kept;
-            details += p.style.role == cg::Role::Entering;
+        CHECK_FALSE(scene.has_2d());  // nothing on the world's grid
+        REQUIRE(scene.panels.size() == 2);
+        const cg::Panel &before = scene.panels[0], &after = scene.panels[1];
+        for (const cg::Panel* p : {&before, &after}) {
+            CHECK(p->kind == cg::PanelKind::Chart);
+            CHECK(p->y.lo == before.y.lo);
+            CHECK(p->y.hi == before.y.hi);
+            CHECK(p->x.lo == -0.5);
+            CHECK(p->x.hi == 3.5);
         }
-        for (const auto& g : scene.segments) active += g.style.role == cg::Role::Active;
+        int kept = 0, details = 0, active = 0;
+        for (const cg::Panel* p : {&before, &after})
+            for (const auto& q : p->polygons) {
+                kept += q.style.role == cg::Role::Kept;
+                details += q.style.role == cg::Role::Entering;
+            }
+        for (const auto& g : before.segments) active += g.style.role == cg::Role::Active;
         CHECK(kept == 2 + 4);  // the averages after the level (2) and the samples before (4)
         CHECK(details == 2);
-        CHECK(active == 2 + 4);  // two brackets, each pair joined to its s and d
-        CHECK(scene.grids.empty());
+        CHECK(active == 2);  // two pairs bracketed
+        CHECK(after.x.label == "i: s_k at k, d_k at 2 + k");
+        CHECK(after.labels.size() == 4);  // the values
     }
     SECTION("1D thresholding: the zeroed details as dashed red outlines") {
         Input in = signal({9, 7, 3, 5, 6, 10, 2, 6});
@@ -584,26 +596,31 @@ TEST_CASE("haar-wavelet: the picture — bars in 1D, the coefficient image in 2D
         for (int k = 0; k < 4; ++k) HaarWavelet::step(s, nullptr);
         cg::Scene scene;
         HaarWavelet::draw(s, scene);
+        REQUIRE(scene.panels.size() == 2);
         int dashed = 0;
-        for (const auto& p : scene.polygons) dashed += p.style.role == cg::Role::Discarded;
+        for (const auto& p : scene.panels[1].polygons) dashed += p.style.role == cg::Role::Discarded;
         CHECK(dashed == 2);
     }
-    SECTION("2D: image, coefficients, then the reconstruction beside them; all finite") {
+    SECTION("2D: the image beside the coefficients, then beside the reconstruction") {
         Input in = image(8, HaarWavelet::pattern_image("disc", 8, 1), Mode::NonStandard);
         auto s = HaarWavelet::start(in);
         HaarWavelet::step(s, nullptr);
         HaarWavelet::step(s, nullptr);
         cg::Scene scene;
         HaarWavelet::draw(s, scene);
-        CHECK(scene.grids.size() == 2);
+        REQUIRE(scene.panels.size() == 2);
+        for (const auto& p : scene.panels) CHECK(p.kind == cg::PanelKind::Image);
         bool quadrants = false;
-        for (const auto& l : scene.labels) quadrants = quadrants || l.text == "diagonal";
+        for (const auto& l : scene.panels[1].labels) quadrants = quadrants || l.text == "diagonal";
         CHECK(quadrants);
+        REQUIRE(scene.focus2.size() == 1);  // this step's lines, in the coefficients
+        CHECK(scene.focus2[0].panel == 1);
         while (!HaarWavelet::done(s)) HaarWavelet::step(s, nullptr);
         scene.clear();
         HaarWavelet::draw(s, scene);
-        CHECK(scene.grids.size() == 3);
+        REQUIRE(scene.panels.size() == 2);
+        CHECK(scene.panels[1].title == "reconstruction");
         // The finished reconstruction of an exact run looks like the image.
-        CHECK(scene.grids[2].rgba == scene.grids[0].rgba);
+        CHECK(scene.panels[1].grids[0].rgba == scene.panels[0].grids[0].rgba);
     }
 }
