@@ -2,7 +2,8 @@
 // and grey outside; the triangles found so far in green, lit by a fixed light (diffuse, either
 // side: 0.35 + 0.65 |n·l|) so the surface's shape reads, the last step's in orange; the current
 // cube's twelve edges in orange with its corners (numbered, with their values) and its crossings
-// as teal points, and a caption "case 1 = 00000001₂".
+// as teal points, and a caption "case 1 = 00000001₂" under it. The camera frames the cube, or
+// the triangles the step made.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -76,7 +77,22 @@ void MarchingCubes::draw(const State& s, Scene& scene) {
         scene.faces3.push_back(std::move(f));
     }
     const dvec3 caption((lo.x + hi.x) / 2, lo.y - 0.12 * (hi.y - lo.y), (lo.z + hi.z) / 2);
+    // The camera frames what the step made (or the cube it marched), with a tenth of the grid
+    // around it: on a fine grid a cube or a slab of triangles is otherwise a speck.
+    const dvec3 context = 0.1 * (hi - lo);
+    auto focus_on = [&](dvec3 a, dvec3 b) {
+        const dvec3 c = (a + b) / 2.0, half = glm::max((b - a) / 2.0, context);
+        add_focus(scene, c - half, c + half);
+    };
     if (!single) {
+        if (s.last == Phase::Cubes && s.phase != Phase::Done && s.tri_from < s.triangles.size()) {
+            dvec3 a = s.vertices[std::size_t(s.triangles[s.tri_from][0])], b = a;
+            for (std::size_t n = s.tri_from; n < s.triangles.size(); ++n)
+                for (int v : s.triangles[n])
+                    a = glm::min(a, s.vertices[std::size_t(v)]),
+                    b = glm::max(b, s.vertices[std::size_t(v)]);
+            focus_on(a, b);
+        }
         std::string text = std::to_string(s.triangles.size()) + " triangles";
         if (s.phase == Phase::Done)
             text += ", area " + num(s.area, 4) + (s.boundary == 0 && s.nonmanifold == 0
@@ -93,6 +109,7 @@ void MarchingCubes::draw(const State& s, Scene& scene) {
     };
     for (const auto& e : ends)
         scene.segments3.push_back({corner(e[0]), corner(e[1]), "", {Role::Active, 2.0f}, false});
+    focus_on(corner(0), corner(6));
     const bool values = g.nx * g.ny * g.nz <= 8;
     for (int q = 0; q < 8; ++q) {
         const bool inside = c.index >> q & 1;
@@ -115,7 +132,11 @@ void MarchingCubes::draw(const State& s, Scene& scene) {
         label += " (" + std::to_string(faces) + (faces == 1 ? " saddle face, " : " saddle faces, ") +
                  std::to_string(joined) + " joined)";
     }
-    scene.labels3.push_back({caption, label, {Role::Active}});
+    // Under the cube, which the camera frames, rather than under the whole grid.
+    const dvec3 c0 = glm::min(corner(0), corner(6)), c1 = glm::max(corner(0), corner(6));
+    scene.labels3.push_back({dvec3((c0.x + c1.x) / 2, c0.y - 0.15 * (c1.y - c0.y), (c0.z + c1.z) / 2),
+                             label,
+                             {Role::Active}});
 }
 
 }  // namespace cg
