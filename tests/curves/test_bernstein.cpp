@@ -201,22 +201,29 @@ TEST_CASE("bernstein: bad input names the field", "[curves][bernstein]") {
     CHECK(a.result(*run)["affine_invariant"].is_null());
 }
 
-TEST_CASE("bernstein: the picture plots the basis beside the curve", "[curves][bernstein]") {
+TEST_CASE("bernstein: the picture charts the basis beside the curve", "[curves][bernstein]") {
     auto s = Bernstein::start({{{0, 0}, {1, 3}, {4, 4}, {6, 1}}, 0.5, false, std::nullopt});
     while (!Bernstein::done(s)) Bernstein::step(s, nullptr);
     cg::Scene scene;
     Bernstein::draw(s, scene);
     CHECK(scene.handles.size() == 4);
     CHECK(scene.handles[3].x_field == "/control_points/3/0");
-    int hull = 0, plotted = 0;
-    for (const auto& poly : scene.polygons) {
-        hull += poly.style.role == cg::Role::Window && poly.filled;
-        // Basis curves live right of the control points (x > 6).
-        plotted += poly.points.size() == 101 && poly.points.front().x > 6;
-    }
+    int hull = 0;
+    for (const auto& poly : scene.polygons) hull += poly.style.role == cg::Role::Window && poly.filled;
     CHECK(hull == 1);
+    // The basis in a chart of its own: t from 0 to 1, B from 0 to 1, four curves, four values.
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& chart = scene.panels[0];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.x.lo == 0);
+    CHECK(chart.x.hi == 1);
+    CHECK(chart.y.lo == 0);
+    CHECK(chart.y.hi == 1);
+    int plotted = 0;
+    for (const auto& poly : chart.polygons) plotted += poly.points.size() == 101;
     CHECK(plotted == 4);
     int values = 0;
-    for (const auto& p : scene.points) values += p.label.rfind("B", 0) == 0;
+    for (const auto& p : chart.points) values += p.label.rfind("B", 0) == 0;
     CHECK(values == 4);
+    for (const auto& p : scene.points) CHECK(p.label.rfind("B", 0) != 0);  // none in the world
 }
