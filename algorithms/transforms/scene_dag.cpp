@@ -1,4 +1,5 @@
-// Sections: [helpers] [spec] [validate] [advance] [narrate] [result and traverse] [draw]
+// Sections: [helpers] [spec] [validate] [advance] [narrate] [result and traverse]; the picture
+// is in scene_dag_draw.cpp
 #include "transforms/scene_dag.hpp"
 
 #include <algorithm>
@@ -522,59 +523,6 @@ std::vector<dvec3> SceneDag::corners(const dmat4& m) {
         c.push_back(dvec3(m * glm::dvec4(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5,
                                           i & 4 ? 0.5 : -0.5, 1.0)));
     return c;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// The world frame; every box drawn so far (the latest in the active colour); the path from the
-// root as segments between the frames' origins, each labelled with its node; the current
-// node's frame (the top matrix's columns at its origin).
-void SceneDag::draw(const State& s, Scene& scene) {
-    // Lengths by hypot, not √(x² + y² + z²): a part translated by 1e300 has a finite distance
-    // whose square overflows. Beyond 1e300 the picture's reach is the same anyway.
-    const auto length = [](dvec3 v) { return std::hypot(v.x, v.y, v.z); };
-    double reach = 1.0;
-    for (const Draw& d : expand(s.in, false))
-        reach = std::max(reach, length(dvec3(d.matrix[3])));
-    for (const Draw& d : expand(s.in, true))
-        for (const dvec3& c : corners(d.matrix)) reach = std::max(reach, length(c));
-    scene.extent3 = 1.1 * std::min(reach, 1e300);
-    scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, "", 0.5f});
-
-    static constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                                         {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-    for (std::size_t k = 0; k < s.draws.size(); ++k) {
-        const bool now = s.last == Event::Draw && k + 1 == s.draws.size();
-        const std::vector<dvec3> c = corners(s.draws[k].matrix);
-        for (const auto& f : kFaces)
-            scene.faces3.push_back({{c[f[0]], c[f[1]], c[f[2]], c[f[3]]},
-                                    {now ? Role::Active : Role::Kept, 1.0f},
-                                    now ? 0.6f : 0.35f});
-        const std::size_t slash = s.draws[k].path.rfind('/');
-        scene.labels3.push_back({dvec3(s.draws[k].matrix[3]),
-                                 slash == std::string::npos ? s.draws[k].path
-                                                            : s.draws[k].path.substr(slash + 1),
-                                 {now ? Role::Active : Role::Kept}});
-    }
-
-    // The path: stack level k (k ≥ 1) holds the world matrix of the k-th node on the path.
-    dvec3 prev(0, 0, 0);
-    for (int k = 1; k <= depth(s); ++k) {
-        const dvec3 o(s.stack[k][3]);
-        scene.segments3.push_back({prev, o, "", {Role::Active, 2.5f}, true});
-        scene.points3.push_back({o, s.in.nodes[s.path[k - 1].node].name, {Role::Active}});
-        prev = o;
-    }
-    if (depth(s) >= 1) {
-        const dmat4& m = s.stack.back();
-        auto unit = [](glm::dvec4 v) {
-            const dvec3 u(v);
-            const double l = std::hypot(u.x, u.y, u.z);
-            return l > 0 ? u / l : u;
-        };
-        scene.frames3.push_back({dvec3(m[3]), unit(m[0]), unit(m[1]), unit(m[2]), 0.8,
-                                 s.in.nodes[s.path.back().node].name, 1.0f});
-    }
 }
 
 }  // namespace cg
