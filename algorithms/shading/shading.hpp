@@ -206,7 +206,8 @@ struct Shading {
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }
     static Result result(const State& s);  // shares the image's rows with the state
-    static void draw(const State& s, Scene& scene);
+    static void draw(const State& s, Scene& scene);  // shading_draw.cpp
+    static std::string model_name(Model m);           // "flat", "Gouraud", "Phong"
 
     // Exam practice (shading_exam.cpp).
     static Input exam_input(Rng& rng);

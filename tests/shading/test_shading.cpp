@@ -703,8 +703,7 @@ TEST_CASE("shading: the picture shows the run beside the other two models and th
     cg::Scene scene;
     run->draw(scene);
     REQUIRE(scene.grids.size() == 3);  // this run, and the two others finished
-    // A 2 × 2 table: the run top left, the others top right and bottom left (gap 3), the
-    // profile bottom right.
+    // In the world: the run top left, the others top right and bottom left (gap 3).
     CHECK(scene.grids[1].origin == dvec2(19, 0));
     CHECK(scene.grids[2].origin == dvec2(0, -15));
     std::set<std::string> titles;
@@ -712,20 +711,27 @@ TEST_CASE("shading: the picture shows the run beside the other two models and th
     CHECK(titles.count("Phong shading (this run)") == 1);
     CHECK(titles.count("flat shading (finished)") == 1);
     CHECK(titles.count("Gouraud shading (finished)") == 1);
-    CHECK(titles.count("(r + g + b)/3 along row 6") == 1);
+    // The profile: a chart of its own, the image's columns against intensity 0 … 1.
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& chart = scene.panels[0];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.title == "intensity along row 6");
+    CHECK(chart.x.hi == 16);
+    CHECK(chart.y.lo == 0);
+    CHECK(chart.y.hi == 1);
     // The other two are complete: every pixel the mesh covers is coloured.
     long long filled = 0;
     for (std::uint32_t c : scene.grids[1].rgba) filled += c != Shading::kBackground;
     CHECK(filled == 14 * 10);  // the mesh covers x 1 … 15, y 1 … 11: 14 × 10 centres
-    // Profile polylines: below the images (y < 0), one thick one for this run.
+    // Profile polylines, one thick one for this run.
     int profile_lines = 0, thick = 0;
-    for (const auto& p : scene.polygons)
-        if (!p.closed && !p.points.empty() && p.points[0].y < 0) {
-            ++profile_lines;
-            thick += p.style.width > 2.5f;
-        }
+    for (const auto& p : chart.polygons) {
+        ++profile_lines;
+        thick += p.style.width > 2.5f;
+    }
     CHECK(profile_lines == 2);  // the finished flat and Gouraud rows; this run's row is empty
     CHECK(thick == 0);
+    CHECK(chart.legend.size() == 2);
     CHECK(scene.handles.size() == 9);  // one per vertex
     CHECK(scene.handles[4].x_field == "/mesh/vertices/4/0");
     // Finished: this run's profile is there too, and the run's image is complete.
@@ -735,10 +741,12 @@ TEST_CASE("shading: the picture shows the run beside the other two models and th
     long long mine = 0;
     for (std::uint32_t c : end.grids[0].rgba) mine += c != Shading::kBackground;
     CHECK(mine == filled);
+    REQUIRE(end.panels.size() == 1);
     int thick_end = 0;
-    for (const auto& p : end.polygons)
-        if (!p.closed && !p.points.empty() && p.points[0].y < 0) thick_end += p.style.width > 2.5f;
+    for (const auto& p : end.panels[0].polygons) thick_end += p.style.width > 2.5f;
     CHECK(thick_end == 1);
+    REQUIRE(end.panels[0].legend.size() == 3);
+    CHECK(end.panels[0].legend[0].text == "Phong (this run)");  // this run first
 }
 
 // Found by fuzz_algorithm_input (tests/fuzz/regressions/fuzz_algorithm_input/
