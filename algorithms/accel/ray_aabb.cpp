@@ -1,4 +1,5 @@
-// Sections: [helpers] [spec] [validate] [slab and intersect] [step] [narrate] [draw]
+// Sections: [helpers] [spec] [validate] [slab and intersect] [step] [narrate]
+// (the picture: ray_aabb_draw.cpp)
 #include "accel/ray_aabb.hpp"
 
 #include <algorithm>
@@ -11,7 +12,6 @@ namespace cg {
 
 namespace {
 
-using glm::dvec2;
 using glm::dvec3;
 using Case = RayAabb::Case;
 using Phase = RayAabb::Phase;
@@ -414,181 +414,6 @@ void RayAabb::narrate(const State& s, StepInfo& info) {
     else
         narrate_verdict(s, info);
     fill_vars(s, info);
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-namespace {
-
-bool finite(dvec3 p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-bool finite(dvec2 p) {
-    return std::isfinite(p.x) && std::isfinite(p.y);
-}
-
-// The t range worth drawing: t = 0 and every plane's t of the whole input (not only the axes
-// worked so far, so the view does not jump between steps), padded.
-struct Range {
-    double lo = 0, hi = 1;
-};
-Range t_range(const RayAabb::Input& in) {
-    Range r{0, 0};
-    for (int i = 0; i < 3; ++i) {
-        const RayAabb::Slab sl = RayAabb::slab(in.min[i], in.max[i], in.origin[i], in.direction[i]);
-        for (double t : {sl.t_near, sl.t_far})
-            if (std::isfinite(t)) r.lo = std::min(r.lo, t), r.hi = std::max(r.hi, t);
-    }
-    if (!(r.hi - r.lo > 0) || !std::isfinite(r.hi - r.lo)) {
-        // Only t = 0 (the origin on a corner of a point box): one box diagonal either side.
-        const double size = glm::length(in.max - in.min) / glm::length(in.direction);
-        const double w = std::isfinite(size) && size > 0 ? size : 1.0;
-        r.lo = -w, r.hi = w;
-    }
-    const double pad = 0.15 * (r.hi - r.lo);
-    if (std::isfinite(pad)) r.lo -= pad, r.hi += pad;
-    return r;
-}
-
-void push(Scene& scene, const Segment3& s) {
-    if (finite(s.a) && finite(s.b)) scene.segments3.push_back(s);
-}
-void push(Scene& scene, const Point3& p) {
-    if (finite(p.p)) scene.points3.push_back(p);
-}
-void push(Scene& scene, const Face3& f) {
-    for (const dvec3& p : f.points)
-        if (!finite(p)) return;
-    scene.faces3.push_back(f);
-}
-void push2(Scene& scene, const Segment2& s) {
-    if (finite(s.a) && finite(s.b)) scene.segments.push_back(s);
-}
-void push2(Scene& scene, const Label2& l) {
-    if (finite(l.p)) scene.labels.push_back(l);
-}
-
-// The two planes of slab i as quads, a margin beyond the box on the other two axes.
-void slab_planes(const RayAabb::Input& in, int i, Style style, float alpha, Scene& scene) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const dvec3 size = in.max - in.min;
-    const double m = 0.35 * std::max({size.x, size.y, size.z, 1e-300});
-    for (double c : {in.min[i], in.max[i]}) {
-        dvec3 q[4];
-        for (int n = 0; n < 4; ++n) {
-            q[n][i] = c;
-            q[n][j] = (n == 1 || n == 2) ? in.max[j] + m : in.min[j] - m;
-            q[n][k] = (n >= 2) ? in.max[k] + m : in.min[k] - m;
-        }
-        push(scene, Face3{{q[0], q[1], q[2], q[3]}, style, alpha, true, true});
-    }
-}
-
-}  // namespace
-
-// 3D: the box (translucent blue), the current axis's two planes (orange), the ray from E with
-// the line behind E dashed, each worked slab's entry and exit on it (teal, magenta), the running
-// [t_min, t_max] (orange; green and thick in the box once it is a hit). 2D: the t axis, one row
-// per slab with its interval, the running interval below, t = 0 marked.
-void RayAabb::draw(const State& s, Scene& scene) {
-    const Input& in = s.in;
-    const Result& r = s.r;
-    const dvec3 E = in.origin, d = in.direction;
-    const Range range = t_range(in);
-    auto P = [&](double t) { return E + t * d; };
-
-    // The box: its six faces.
-    auto corner = [&](int c) {
-        return dvec3(c & 1 ? in.max.x : in.min.x, c & 2 ? in.max.y : in.min.y,
-                     c & 4 ? in.max.z : in.min.z);
-    };
-    static const int quads[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
-                                    {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
-    for (const auto& q : quads)
-        push(scene, Face3{{corner(q[0]), corner(q[1]), corner(q[2]), corner(q[3])},
-                          {Role::Window, 1.5f},
-                          0.12f,
-                          true,
-                          true});
-    scene.labels3.push_back({in.max, "max", {Role::Window}});
-    scene.labels3.push_back({in.min, "min", {Role::Window}});
-
-    // The planes of the axis in hand (the next one before the first step and at the verdict,
-    // none).
-    const bool axis_step = s.last == Phase::Axis && s.axis > 0;
-    const int focus = s.axis == 0 ? -1 : s.axis - 1;
-    if (focus >= 0 && axis_step) slab_planes(in, focus, {Role::Active, 1.5f}, 0.16f, scene);
-
-    // The ray: behind E dashed, ahead with an arrow.
-    if (range.lo < 0)
-        push(scene, Segment3{P(range.lo), E, "", {Role::Construction, 1.0f, true}, false});
-    push(scene, Segment3{E, P(range.hi), "E + t d", {Role::Subject, 1.5f}, true});
-    push(scene, Point3{E, "E", {Role::Subject}, 5.0f});
-
-    // Each worked slab's two points on the ray.
-    for (int i = 0; i < r.count; ++i) {
-        const Slab& sl = r.axes[i];
-        const bool now = i == focus && axis_step;
-        const float rad = now ? 6.0f : 4.0f;
-        if (std::isfinite(sl.t_near))
-            push(scene, Point3{P(sl.t_near),
-                               std::string(kAxis[i]) + " near " + num(sl.t_near, 4),
-                               {Role::Entering},
-                               rad});
-        if (std::isfinite(sl.t_far))
-            push(scene, Point3{P(sl.t_far),
-                               std::string(kAxis[i]) + " far " + num(sl.t_far, 4),
-                               {Role::Leaving},
-                               rad});
-    }
-
-    // The running interval, or the final one.
-    if (r.count > 0 && r.t_min <= r.t_max) {
-        const double a = std::max(r.t_min, range.lo), b = std::min(r.t_max, range.hi);
-        if (r.verdict == Verdict::Hit || r.verdict == Verdict::Inside) {
-            const double a0 = std::max(r.t_min, 0.0);
-            push(scene, Segment3{P(a0), P(r.t_max), "in the box", {Role::Kept, 6.0f}, false});
-            if (r.t_min < 0)  // the part of the line in the box behind E
-                push(scene,
-                     Segment3{
-                         P(std::max(r.t_min, range.lo)), E, "", {Role::Kept, 2.0f, true}, false});
-            push(scene, Point3{P(r.t_hit), "t_hit " + num(r.t_hit, 4), {Role::Kept}, 7.0f});
-        } else if (a <= b) {
-            push(scene,
-                 Segment3{P(a),
-                          P(b),
-                          "",
-                          {r.verdict == Verdict::Behind ? Role::Discarded : Role::Active, 4.0f},
-                          false});
-        }
-    }
-    scene.extent3 = 0;  // fit to the content
-
-    // 2D: the t axis with one row per slab (y = 3, 2, 1 for x, y, z) and the running interval
-    // (y = 0). Infinite ends run to the strip's edge with an arrow.
-    const double lo = range.lo, hi = range.hi, w = hi - lo;
-    if (!(w > 0) || !std::isfinite(w)) return;
-    const double h = 0.2 * w;  // row spacing in t units, so the strip keeps its shape
-    auto row = [&](double y, double a, double b, const std::string& name, Role role, bool active) {
-        push2(scene, Segment2{{lo, y}, {hi, y}, "", {Role::Construction, 1.0f}, false});
-        push2(scene, Label2{{lo - 0.03 * w, y}, name, {active ? Role::Active : Role::Neutral}});
-        if (!(a <= b)) return;  // empty
-        const double ca = std::max(a, lo), cb = std::min(b, hi);
-        if (ca > cb) return;
-        push2(scene, Segment2{{ca, y}, {cb, y}, "", {role, active ? 7.0f : 4.0f}, std::isinf(b)});
-        if (std::isfinite(a)) push2(scene, Label2{{ca, y + 0.3 * h}, num(a, 4), {Role::Entering}});
-        if (std::isfinite(b)) push2(scene, Label2{{cb, y + 0.3 * h}, num(b, 4), {Role::Leaving}});
-    };
-    for (int i = 0; i < r.count; ++i) {
-        const Slab& sl = r.axes[i];
-        const std::string name =
-            std::string(kAxis[i]) + " slab" + (sl.kind == Case::ParallelOutside ? " (empty)" : "");
-        row((3 - i) * h, sl.t_near, sl.t_far, name, Role::Window, i == focus && axis_step);
-    }
-    const bool hit = r.verdict == Verdict::Hit || r.verdict == Verdict::Inside;
-    row(0, r.t_min, r.t_max, "[t_min, t_max]", hit ? Role::Kept : Role::Active, !axis_step);
-    push2(scene,
-          Segment2{{0, -0.5 * h}, {0, 3.5 * h}, "t = 0", {Role::Construction, 1.0f, true}, false});
 }
 
 }  // namespace cg

@@ -166,6 +166,12 @@ std::string scene_problem(const cg::Scene& s) {
         if (!f2(g.a) || !f2(g.b)) return "segments";
     for (const auto& l : s.labels)
         if (!f2(l.p)) return "labels";
+    for (const auto& panel : s.panels) {
+        for (const auto& g : panel.segments)
+            if (!f2(g.a) || !f2(g.b)) return "chart segments";
+        for (const auto& l : panel.labels)
+            if (!f2(l.p)) return "chart labels";
+    }
     for (const auto& p : s.points3)
         if (!f3(p.p)) return "points3";
     for (const auto& g : s.segments3)
@@ -560,7 +566,22 @@ TEST_CASE(
             inside = g.a == dvec3(0, 1, 1) && g.b == dvec3(2, 2, 1.5);
     CHECK(inside);
     for (const auto& f : scene.faces3) CHECK(f.style.role != cg::Role::Active);  // no slab now
-    CHECK(scene.has_2d());                                                       // the t strip
+    // The t intervals are a chart of their own: x, y, z slabs and the overlap [t_min, t_max]
+    // = [1, 2] in green, on a t axis.
+    CHECK(!scene.has_2d());
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& chart = scene.panels[0];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.x.label == "t");
+    bool overlap = false;
+    int bars = 0;
+    for (const auto& g : chart.segments) {
+        bars += g.style.role == cg::Role::Window;
+        overlap |= g.style.role == cg::Role::Kept && g.a == glm::dvec2(1, 0) && g.b == glm::dvec2(2, 0);
+    }
+    CHECK(bars == 3);
+    CHECK(overlap);
+    CHECK(scene.focus3.size() == 1);
 
     // Every step of every preset and of 3,000 random rays (tiny and huge included) draws only
     // finite coordinates.
