@@ -582,6 +582,22 @@ TEST_CASE("colour-spaces: the picture: the hexcone with the colour's point, and 
     for (const auto& f : scene.faces3) outlined += f.outline;
     CHECK(outlined == 1);
     CHECK(scene.faces3[4].outline);  // the wedge after green (index 2: two faces per wedge)
+    // Each solid labels the colour once, in its own space: before the result only the cube
+    // (RGB); at the end the cone says HSV and the cube RGB, in the step's orange.
+    auto labelled = [&](const std::string& prefix) {
+        int n = 0;
+        for (const auto& l : scene.labels3)
+            n += l.text.rfind(prefix, 0) == 0 && l.style.role == cg::Role::Active;
+        return n;
+    };
+    CHECK(labelled("RGB (0.3, 0.8, 0.5)") == 1);
+    CHECK(labelled("HSV") == 0);
+    while (!ColourSpaces::done(s)) ColourSpaces::step(s, nullptr);
+    scene.clear();
+    ColourSpaces::draw(s, scene);
+    CHECK(labelled("HSV (0, 1, 1)") == 1);  // the last colour, red
+    CHECK(labelled("RGB (1, 0, 0)") == 1);
+    CHECK(scene.focus3.size() == 1);
     // HSL: the double hexcone (the sides up to white too).
     auto h = ColourSpaces::start({Space::Hsl, Space::Rgb, {{144, 0.5, 0.5}}});
     scene.clear();
