@@ -150,7 +150,7 @@ void SpringMass::draw(const State& s, Scene& scene) {
     if (h_lo < e_lo) e_lo = h_lo - pad;
     if (h_hi > e_hi) e_hi = h_hi + pad;
     Panel& chart = add_chart(scene,
-                             s.blew_up ? "total energy E(t): blew up at t = " +
+                             s.blew_up ? "total energy: blew up at t = " +
                                              num(double(s.k) * in.dt, 4) + " s"
                                        : "total energy E(t) = " + num(s.history.back(), 4) + " J",
                              Axis{"t (s)", 0, t_end}, Axis{"E (J)", e_lo, e_hi});
