@@ -630,19 +630,34 @@ void trace_lines(const Input& in, const std::string& w, std::size_t from, std::s
     flush();
 }
 
+// n as a subscript: w₁₂.
+std::string subscript(int n) {
+    static const char* const digits[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
+    std::string out;
+    for (char c : std::to_string(n)) out += digits[c - '0'];
+    return out;
+}
+
 }  // namespace
 
 // During the rewriting: the current generation's string drawn whole in grey, so the growth
 // shows, and its first symbols as a label. During the turtle's walk: the lines drawn so far in
 // green, this step's in orange, the turtle as a point with an arrow along its heading, and the
-// positions saved on the stack as blue points numbered by depth.
+// positions saved on the stack as blue points numbered by depth. A system that draws nothing gets
+// a chart of its string's length per generation.
 void LSystem::draw(const State& s, Scene& scene) {
     const Input& in = *s.in;
     const std::string& w = *s.word;
+    // A system whose symbols never draw (Lindenmayer's algae) shows what it is about instead:
+    // the string's length generation by generation, beside its current string.
+    bool ever_draws = std::any_of(in.axiom.begin(), in.axiom.end(),
+                                  [&](char c) { return draws(in, c); });
+    for (const Rule& r : in.rules)
+        for (char c : r.replacement) ever_draws = ever_draws || draws(in, c);
     if (s.next == 0) {  // rewriting, or the walk not yet begun: the whole string, in grey
         trace_lines(in, w, w.size(), w.size(), scene, {Role::Subject, 1.5f}, {});
         scene.labels.push_back({{0, -0.6 * in.step},
-                                "w" + std::to_string(s.generation) + " = " + shown(w, 60),
+                                "w" + subscript(s.generation) + " = " + shown(w, 60),
                                 {Role::Neutral}});
     } else {
         trace_lines(in, w, s.from, s.next, scene, {Role::Kept, 1.5f}, {Role::Active, 2.5f});
@@ -659,6 +674,26 @@ void LSystem::draw(const State& s, Scene& scene) {
             scene.segments.push_back(
                 {t.p, t.p + 0.5 * in.step * direction(in, t), "", {Role::Window, 1.5f}, true});
     }
+    if (ever_draws) return;
+    if (s.next > 0)  // the string stays in view: it is all there is to see
+        scene.labels.push_back({{0, -0.6 * in.step},
+                                "w" + subscript(s.generation) + " = " + shown(w, 60),
+                                {Role::Neutral}});
+    Panel& chart = add_chart(scene, "the string's length per generation",
+                             Axis{"generation n", -0.5, double(in.generations) + 0.5},
+                             Axis{"|wₙ| (symbols)", 0, 0, false, true});
+    chart.weight = 1.5;  // as wide as the world: it holds the turtle alone
+    std::vector<glm::dvec2> lengths;
+    for (std::size_t g = 0; g < s.lengths.size(); ++g)
+        lengths.push_back({double(g), double(s.lengths[g])});
+    add_line(chart, lengths, {Role::Kept, 2.0f});
+    add_dots(chart, lengths, {Role::Kept, 2.0f});
+    const glm::dvec2 now = lengths.back();
+    chart.points.push_back({now,
+                            "|w" + subscript(int(s.lengths.size()) - 1) +
+                                "| = " + std::to_string(s.lengths.back()),
+                            {Role::Active},
+                            6.0f});
 }
 
 }  // namespace cg
