@@ -390,8 +390,16 @@ TEST_CASE("perspective: the picture shows the frustum in 3D and NDC in 2D", "[tr
     cg::Scene scene;
     Perspective::draw(s, scene);
     CHECK(scene.faces3.size() == 6);  // near, far and four sides
-    REQUIRE(scene.frames3.size() == 1);
-    CHECK(scene.frames3[0].origin == dvec3(0, 0, -2));
+    // The eye, with its frame r, u, f̂ as three arrows (f̂ toward the centre).
+    int eye = 0;
+    for (const auto& p : scene.points3) eye += p.label == "eye" && p.p == dvec3(0, 0, -2);
+    CHECK(eye == 1);
+    std::vector<std::string> frame;
+    for (const auto& g : scene.segments3)
+        if (g.arrow && g.a == dvec3(0, 0, -2)) frame.push_back(g.label);
+    CHECK(frame == std::vector<std::string>{"r", "u", "f̂"});
+    REQUIRE(scene.focus3.size() == 1);  // the frustum, the eye and the points
+    CHECK(scene.focus3[0].lo.z <= -2);
     while (!Perspective::done(s)) Perspective::step(s, nullptr);
     scene.clear();
     Perspective::draw(s, scene);
