@@ -1,4 +1,5 @@
-// Sections: [helpers] [spec] [validate] [advance] [narrate] [result and interpolate] [draw]
+// Sections: [helpers] [spec] [validate] [advance] [narrate] [result and interpolate]; the picture
+// is in slerp_draw.cpp
 #include "transforms/slerp.hpp"
 
 #include <algorithm>
@@ -509,58 +510,6 @@ Slerp::Result Slerp::result(const State& s) {
     r.q = blend(q0, q1, w);
     r.matrix = in_between(in, r.q, q0, q1);
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// The unit sphere (three great circles), the two key orientations as faint frames, the
-// current orientation as a frame with a house, and the three paths of the x axis's tip as far
-// as they have been sampled: slerp (green), lerp of matrices (red, cutting inside the sphere),
-// lerp of Euler angles (magenta).
-void Slerp::draw(const State& s, Scene& scene) {
-    scene.extent3 = 1.6;
-    const Style sphere{Role::Construction, 1.0f, false};
-    rot::draw_circle(scene, {0, 0, 0}, {0, 0, 1}, 1.0, sphere);
-    rot::draw_circle(scene, {0, 0, 0}, {0, 1, 0}, 1.0, sphere);
-    rot::draw_circle(scene, {0, 0, 0}, {1, 0, 0}, 1.0, sphere);
-    const bool started = s.phase != Phase::Normalise;
-    const dmat3 m0 = started ? to_matrix(s.q0) : to_matrix(unit(s.in.q0));
-    const dmat3 m1 = started ? to_matrix(s.q1) : to_matrix(unit(s.in.q1));
-    scene.frames3.push_back({{0, 0, 0}, m0[0], m0[1], m0[2], 1.0, "q0·", 0.35f});
-    scene.frames3.push_back({{0, 0, 0}, m1[0], m1[1], m1[2], 1.0, "q1·", 0.35f});
-    scene.points3.push_back({m0[0], "q0 x̂", {Role::Subject}});
-    scene.points3.push_back({m1[0], "q1 x̂", {Role::Subject}});
-
-    dmat3 now(1.0);
-    bool have = false;
-    if (s.last == Phase::Sample) {
-        now = to_matrix(blend(s.q0, s.q1, weights(s.q0, s.q1, s.k / double(kSamples - 1))));
-        have = true;
-    } else if (started && s.last >= Phase::Blend) {
-        now = to_matrix(s.q);
-        have = true;
-    }
-    if (have) {
-        rot::HousePlacement h;
-        h.size = 0.6;
-        rot::draw_house(scene, h, now, false);
-        scene.frames3.push_back({{0, 0, 0}, now[0], now[1], now[2], 1.15, "q·", 1.0f});
-    }
-
-    auto path = [&](const std::vector<dvec3>& tips, Role role, const std::string& name) {
-        for (std::size_t i = 1; i < tips.size(); ++i)
-            scene.segments3.push_back({tips[i - 1], tips[i], "", {role, 2.5f}, false});
-        if (!tips.empty()) scene.points3.push_back({tips.back(), name, {role}, 4.0f});
-    };
-    path(s.tip_slerp, Role::Kept, "slerp");
-    path(s.tip_matrix, Role::Discarded, "lerp of matrices");
-    path(s.tip_euler, Role::Leaving, "lerp of Euler angles");
-    if (s.last == Phase::Sample && glm::length(s.tip_matrix.back()) > 1e-9)  // how far inside
-        scene.segments3.push_back({s.tip_matrix.back(),
-                                   glm::normalize(s.tip_matrix.back()),
-                                   "",
-                                   {Role::Construction, 1.0f, true},
-                                   false});
 }
 
 }  // namespace cg
