@@ -1,4 +1,5 @@
-// Sections: [helpers] [spec] [validate] [advance] [narrate] [draw]
+// Sections: [helpers] [spec] [validate] [advance] [narrate]; the picture is in
+// change_of_basis_draw.cpp
 #include "transforms/change_of_basis.hpp"
 
 #include <algorithm>
@@ -572,78 +573,6 @@ void ChangeOfBasis::narrate(const State& s, StepInfo& info) {
             break;
     }
     fill_vars(s, info);
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// The world frame, F1 and F2 as arrows at their origins (the frame the current step works on
-// solid and labelled in the active colour, the other faint), the points where they are in the
-// world, labelled with their coordinates in both frames once known, and dashed construction
-// lines: P reached from O_v along v₁, v₂, v₃ (the F1 step), and from O_w along w₁, w₂, w₃ (the
-// step that maps it). Vectors are drawn as arrows from O_v.
-void ChangeOfBasis::draw(const State& s, Scene& scene) {
-    const Frame &f1 = s.in->from, &f2 = s.in->to;
-    const Result& r = s.r;
-    const bool started = s.phase != Phase::WorldFromF1;
-    // Sizes from the largest |component| (a length could overflow for numbers near 1e100).
-    double reach = 1.5;
-    for (const Frame* f : {&f1, &f2}) {
-        reach = std::max(reach, max_abs(f->origin));
-        for (const dvec3& a : f->axes) reach = std::max(reach, max_abs(f->origin + a));
-    }
-    for (const dvec3& p : r.world) reach = std::max(reach, max_abs(p));
-    scene.extent3 = 1.15 * reach;
-
-    const bool f1_active = started && (s.last == Phase::WorldFromF1 || s.last == Phase::Compose);
-    const bool f2_active = started && s.last != Phase::WorldFromF1;
-    scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, "", 0.35f});
-    scene.frames3.push_back(
-        {f1.origin, f1.axes[0], f1.axes[1], f1.axes[2], 1.0, "F1", f1_active ? 1.0f : 0.45f});
-    scene.frames3.push_back(
-        {f2.origin, f2.axes[0], f2.axes[1], f2.axes[2], 1.0, "F2", f2_active ? 1.0f : 0.45f});
-    scene.labels3.push_back({f1.origin, "O_v", {f1_active ? Role::Active : Role::Neutral}});
-    scene.labels3.push_back({f2.origin, "O_w", {f2_active ? Role::Active : Role::Neutral}});
-
-    const Style f1_lines{Role::Construction, 1.5f, true};
-    const Style f2_lines{Role::Active, 1.5f, true};
-    // O → O + c₁a₁ → … → O + c₁a₁ + c₂a₂ + c₃a₃, skipping legs of length 0.
-    const auto path = [&](const Frame& f, dvec3 c, const Style& style) {
-        dvec3 at = f.origin;
-        for (int i = 0; i < 3; ++i) {
-            if (c[i] == 0) continue;
-            const dvec3 next = at + c[i] * f.axes[i];
-            scene.segments3.push_back({at, next, "", style, false});
-            at = next;
-        }
-    };
-
-    if (!started) return;
-    const bool mapping_point = s.last == Phase::Points;
-    const std::size_t current = mapping_point ? r.points.size() - 1 : r.points.size();
-    for (std::size_t k = 0; k < r.world.size(); ++k) {
-        std::string label = "P" + std::to_string(k) + ": " + num(s.in->points[k], 4) + " in F1";
-        if (k < r.points.size()) label += " = " + num(r.points[k], 4) + " in F2";
-        const bool now = mapping_point && k == current;
-        scene.points3.push_back({r.world[k],
-                                 label,
-                                 {now                   ? Role::Active
-                                  : k < r.points.size() ? Role::Kept
-                                                        : Role::Subject}});
-        if (s.last == Phase::WorldFromF1) path(f1, s.in->points[k], f1_lines);
-        if (now) path(f2, r.points[k], f2_lines);
-    }
-    const bool mapping_vector = s.last == Phase::Vectors;
-    for (std::size_t k = 0; k < s.in->vectors.size(); ++k) {
-        const dvec3 world = vector(r.world_from_f1, s.in->vectors[k]);
-        std::string label = "u" + std::to_string(k) + ": " + num(s.in->vectors[k], 4) + " in F1";
-        if (k < r.vectors.size()) label += " = " + num(r.vectors[k], 4) + " in F2";
-        const bool now = mapping_vector && k + 1 == r.vectors.size();
-        scene.segments3.push_back({f1.origin,
-                                   f1.origin + world,
-                                   label,
-                                   {now ? Role::Active : Role::Subject, 2.0f},
-                                   true});
-    }
 }
 
 }  // namespace cg
