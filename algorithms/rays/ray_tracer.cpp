@@ -1,4 +1,5 @@
-// Sections: [spec] [validate and start] [the image rows] [stepping] [narration] [draw] [result]
+// Sections: [spec] [validate and start] [the image rows] [stepping] [narration] [result]; the
+// picture is in ray_tracer_draw.cpp.
 #include "rays/ray_tracer.hpp"
 
 #include <algorithm>
@@ -7,12 +8,10 @@
 
 #include "core/format.hpp"
 #include "rays/csg_ray.hpp"
-#include "rays/quadric_mesh.hpp"
 #include "sampling/patterns.hpp"
 
 namespace cg {
 
-using glm::dvec2;
 using glm::dvec3;
 using rt::Color;
 using Event = RayTracer::Event;
@@ -73,18 +72,20 @@ const Spec& RayTracer::spec() {
         },
         {},  // no sliders
         {
-            .predict = {
-                {"hit", {"t", "n"}},
-                {"lit", {"n·l"}},
-                {"reflect", {"direction"}},
-                {"refract", {"cos θ2"}},
-            },
-            .mistakes = {
-                {"lit", "l", "negate", "took l from the light to the point"},
-                {"shadowed", "", "event:lit", "ignored the blocker on the way to the light"},
-                {"reflect", "direction", "negate", "reflected the wrong way: r = 2(d·n)n − d"},
-                {"hit", "n", "negate", "took the normal pointing into the surface"},
-            },
+            .predict =
+                {
+                    {"hit", {"t", "n"}},
+                    {"lit", {"n·l"}},
+                    {"reflect", {"direction"}},
+                    {"refract", {"cos θ2"}},
+                },
+            .mistakes =
+                {
+                    {"lit", "l", "negate", "took l from the light to the point"},
+                    {"shadowed", "", "event:lit", "ignored the blocker on the way to the light"},
+                    {"reflect", "direction", "negate", "reflected the wrong way: r = 2(d·n)n − d"},
+                    {"hit", "n", "negate", "took the normal pointing into the surface"},
+                },
             .costs = {"rays"},
         },
     };
@@ -216,6 +217,7 @@ RayTracer::State RayTracer::start(const Input& in) {
         }
     } else {
         s.image.reset(c.width, c.height);
+        s.row_rays.assign(static_cast<std::size_t>(c.height), rt::RayCounts{});
     }
     return s;
 }
@@ -267,6 +269,7 @@ void RayTracer::advance(State& s) {
             return;
         case Phase::Pixels: {
             const long long total = static_cast<long long>(W) * H;
+            const rt::RayCounts before = s.rays;
             if (in.granularity == Granularity::Rows) {
                 const int j = static_cast<int>(s.next_pixel / W);
                 for (int i = 0; i < W; ++i)
@@ -283,6 +286,11 @@ void RayTracer::advance(State& s) {
                 ++s.next_pixel;
                 s.last_event = Event::Pixel;
             }
+            rt::RayCounts& row = s.row_rays[static_cast<std::size_t>(s.last_j)];
+            row.primary += s.rays.primary - before.primary;
+            row.shadow += s.rays.shadow - before.shadow;
+            row.reflected += s.rays.reflected - before.reflected;
+            row.refracted += s.rays.refracted - before.refracted;
             if (s.next_pixel >= total) s.phase = Phase::Done;
             return;
         }
@@ -591,7 +599,8 @@ std::string object_name(const rt::Scene& sc, int k) {
     return k < 0 ? std::string("nothing") : sc.objects[k].name;
 }
 
-// What a ray hit: the object's name, and for a mesh which of its triangles ("terrain.triangles[7]").
+// What a ray hit: the object's name, and for a mesh which of its triangles
+// ("terrain.triangles[7]").
 std::string hit_name(const rt::Scene& sc, const rt::Hit& h) {
     if (h.object < 0) return "nothing";
     const rt::Object& o = sc.objects[h.object];
@@ -609,15 +618,18 @@ std::string rgb8_text(std::uint32_t v) {
            std::to_string((v >> 8) & 0xff) + ")";
 }
 
-// The ray's name in the tree: R0 for the primary ray, then S/M/T with its index.
-std::string ray_label(const std::vector<RayTracer::RayNode>& tree, int k) {
-    const RayTracer::RayNode& n = tree[k];
+}  // namespace
+
+std::string RayTracer::ray_label(const std::vector<RayNode>& tree, int k) {
+    const RayNode& n = tree[k];
     const char* letter = n.kind == RayKind::Primary     ? "R"
                          : n.kind == RayKind::Shadow    ? "S"
                          : n.kind == RayKind::Reflected ? "M"
                                                         : "T";
     return letter + std::to_string(k);
 }
+
+namespace {
 
 // How the nearest hit was found: the hierarchy's box and object tests for this ray (counted
 // again here, for the narration only; a mesh's triangle tests count as object tests) against
@@ -628,16 +640,18 @@ void narrate_search(const RayTracer::State& s, const RayTracer::RayNode& n, Step
         rt::traversal_counts(p, n.origin, n.direction, kRayEpsilon, Quadric::kInf, n.time);
     long long all = 0;
     for (const rt::PreparedObject& o : p.objects)
-        all += o.kind == rt::ObjectKind::Mesh ? static_cast<long long>(o.mesh->mesh.triangles.size())
-                                              : 1;
+        all += o.kind == rt::ObjectKind::Mesh
+                   ? static_cast<long long>(o.mesh->mesh.triangles.size())
+                   : 1;
     if (all < 2) return;
     auto count = [](long long k, const char* what) {
         return std::to_string(k) + " " + what + (k == 1 ? "" : "s");
     };
-    info.narration += " Found with " + count(c.box_tests, "box test") + " and " +
-                      count(c.object_tests, "object test") +
-                      " in the scene's bounding volume hierarchy (brute force: " +
-                      count(all, "object test") + ").";
+    info.narration +=
+        " Found with " + count(c.box_tests, "box test") + " and " +
+        count(c.object_tests, "object test") +
+        " in the scene's bounding volume hierarchy (brute force: " + count(all, "object test") +
+        ").";
     info.vars.push_back({"box tests", c.box_tests});
     info.vars.push_back({"object tests", c.object_tests});
 }
@@ -657,8 +671,8 @@ void narrate_csg_hit(const rt::Object& o, const PreparedCsg& p, const RayTracer:
                     csg_node_label(o.csg.nodes[n.right]);
         merge += (merge.empty() ? "" : "; ") + name + ": " + csg_spans_text(lists[k]);
     }
-    info.narration += " CSG segments along the ray: " + merge + "; the first end beyond ε, t = " +
-                      num(ray.hit.t, 6) + ", is the hit.";
+    info.narration += " CSG segments along the ray: " + merge +
+                      "; the first end beyond ε, t = " + num(ray.hit.t, 6) + ", is the hit.";
     info.vars.push_back({"CSG segments", csg_spans_text(lists.back())});
 }
 
@@ -733,7 +747,8 @@ namespace {
     if (!b.nodes.empty()) {
         text = "Built the bounding volume hierarchy over the " + std::to_string(bounded) +
                " objects with a bounding box: " + count(b.nodes.size(), "node", "nodes") + ", " +
-               count(static_cast<std::size_t>(leaves), "leaf", "leaves") + ", depth " + std::to_string(b.depth) +
+               count(static_cast<std::size_t>(leaves), "leaf", "leaves") + ", depth " +
+               std::to_string(b.depth) +
                " (surface area heuristic: a node is split where ½ + (S_L/S) N_L + (S_R/S) N_R is "
                "least). A ray now tests a box before the objects inside it.";
         if (!b.unbounded.empty())
@@ -741,8 +756,9 @@ namespace {
                     " object(s) without a finite box (planes, CSG, moving or open quadrics) are "
                     "tested for every ray.";
     } else {
-        text = "No tree over the objects (fewer than two have a bounding box): every object is "
-               "tested for every ray.";
+        text =
+            "No tree over the objects (fewer than two have a bounding box): every object is "
+            "tested for every ray.";
     }
     info.math = "C = C_{trav} + \\frac{S_L}{S} N_L C_{isect} + \\frac{S_R}{S} N_R C_{isect}";
     add("objects", static_cast<long long>(sc.objects.size()));
@@ -755,8 +771,8 @@ namespace {
         if (sc.objects[k].kind != rt::ObjectKind::Mesh) continue;
         const rt::MeshBvh& m = sc.objects[k].mesh->bvh;
         const std::size_t tris = m.triangles.size();
-        text += " Mesh " + sc.objects[k].name + ": its own hierarchy over " +
-                std::to_string(tris) + " triangles, " + std::to_string(m.nodes.size()) +
+        text += " Mesh " + sc.objects[k].name + ": its own hierarchy over " + std::to_string(tris) +
+                " triangles, " + std::to_string(m.nodes.size()) +
                 " nodes of four children, depth " + std::to_string(m.depth) + ", " +
                 num(static_cast<double>(m.bytes()) / static_cast<double>(tris), 3) +
                 " bytes a triangle; a ray meeting its box costs about " + num(m.cost, 3) +
@@ -804,7 +820,7 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
             break;
     }
     const RayNode& n = s.tree[s.active];
-    const std::string name = ray_label(s.tree, s.active);
+    const std::string name = RayTracer::ray_label(s.tree, s.active);
     add("ray", name + " (" + kind_id(n.kind) + ")");
     add("depth", static_cast<long long>(n.depth));
     add("origin", vec(n.origin));
@@ -876,12 +892,13 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
                 " at t = " + num(n.hit.t, 6) + ": P = " + num(n.hit.point, 4) +
                 ", n = " + num(n.hit.normal, 4) +
                 (n.hit.entering ? "" : " (from inside: the normal is turned to face the ray)") +
-                ". Material " + m.name + (n.detail >= 0 ? " (textured: k_a after its texture)" : "") +
+                ". Material " + m.name +
+                (n.detail >= 0 ? " (textured: k_a after its texture)" : "") +
                 "; ambient k_a I_a = " + num(n.surface.ka * sc.ambient, 4) + ".";
             info.math = "c = k_a I_a = " + tex(n.surface.ka * sc.ambient, 4);
             if (sc.objects[n.hit.object].kind == rt::ObjectKind::Csg)
-                narrate_csg_hit(sc.objects[n.hit.object], *s.prepared->objects[n.hit.object].csg,
-                                n, info);
+                narrate_csg_hit(sc.objects[n.hit.object], *s.prepared->objects[n.hit.object].csg, n,
+                                info);
             add("object", hit_name(sc, n.hit));
             add("t", n.hit.t);
             add("P", vec(n.hit.point));
@@ -971,8 +988,9 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
                 break;
             }
             info.narration = "Ray " + name + " returns " + num(n.color, 4) + "; × " +
-                             num(n.weight, 4) + " is added to " + ray_label(s.tree, n.parent) +
-                             ", whose colour so far is " + num(s.stack.back().c, 4) + ".";
+                             num(n.weight, 4) + " is added to " +
+                             RayTracer::ray_label(s.tree, n.parent) + ", whose colour so far is " +
+                             num(s.stack.back().c, 4) + ".";
             add("returned", colour_vec(n.color));
             add("weight", colour_vec(n.weight));
             break;
@@ -1036,353 +1054,13 @@ void RayTracer::narrate(const State& s, StepInfo& info) {
             }
             info.narration = "The primary ray returns " + num(s.pixel_color, 4) +
                              ": the pixel's colour, stored as " +
-                             rgb8_text(pack_rgba(s.pixel_color)) +
-                             " (clamped to [0, 1], × 255).";
+                             rgb8_text(pack_rgba(s.pixel_color)) + " (clamped to [0, 1], × 255).";
             break;
         default:
             break;
     }
     if (!s.stack.empty()) add("c (so far)", colour_vec(s.stack.back().c));
     add("rays cast", static_cast<long long>(s.rays.total()));
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-namespace {
-
-// The scene's size: for the picture's extent and for cutting unbounded surfaces.
-double scene_extent(const rt::Scene& sc) {
-    double e = glm::length(sc.camera.eye - sc.camera.center);
-    for (const rt::Light& l : sc.lights)
-        if (!l.directional) e = std::max(e, glm::length(l.position - sc.camera.center));
-    return std::max(e, 1e-6);
-}
-
-void draw_objects(const rt::Scene& sc, double extent, Scene& scene) {
-    constexpr std::size_t kMaxDrawnTriangles = 4000;
-    std::size_t triangles = 0;
-    for (const rt::Object& o : sc.objects) {
-        const rt::Material& m = sc.materials[o.material];
-        // The surface's own colour, toward pale blue when it is transparent and toward grey
-        // when it is a mirror, so glass and mirrors do not draw black.
-        Color look = m.kd + 0.3 * m.ks;
-        const double t = std::min(1.0, std::max({m.kt.x, m.kt.y, m.kt.z}));
-        const double r = std::min(1.0, std::max({m.kr.x, m.kr.y, m.kr.z}));
-        look = (1 - t) * look + t * Color(0.6, 0.8, 1.0);
-        look = (1 - r) * look + r * Color(0.7);
-        const Style style{Role::Subject, 1.0f, false, pack_rgba(look, 1)};
-        switch (o.kind) {
-            case rt::ObjectKind::Quadric: {
-                const double L = largest_param(o.quadric);
-                double z_lo, z_hi;
-                drawn_z_range(o.quadric, std::min(extent, 50 * L), z_lo, z_hi);
-                add_quadric_mesh(o.quadric, z_lo, z_hi, style, 0.35f, 20, 10, scene.faces3);
-                break;
-            }
-            case rt::ObjectKind::Plane: {
-                // A square of the plane around the point nearest the look-at centre.
-                const dvec3 n = unit(o.normal);
-                const dvec3 c = sc.camera.center - glm::dot(sc.camera.center - o.p0, n) * n;
-                const dvec3 a = unit(std::fabs(n.x) < 0.9 ? glm::cross(n, dvec3(1, 0, 0))
-                                                          : glm::cross(n, dvec3(0, 1, 0)));
-                const dvec3 b = glm::cross(n, a);
-                const double h = 0.6 * extent;
-                scene.faces3.push_back(
-                    {{c - h * a - h * b, c + h * a - h * b, c + h * a + h * b, c - h * a + h * b},
-                     style,
-                     0.25f,
-                     true,
-                     true});
-                break;
-            }
-            case rt::ObjectKind::Triangle:
-                if (++triangles > kMaxDrawnTriangles) break;
-                scene.faces3.push_back({{o.p0, o.p1, o.p2}, style, 0.5f, true, true});
-                break;
-            case rt::ObjectKind::Mesh: {
-                // Spread over the whole mesh when it has more than there is room for: every
-                // stride-th triangle, so that its shape shows.
-                const mesh::Mesh& m = o.mesh->mesh;
-                const std::size_t room =
-                    triangles < kMaxDrawnTriangles ? kMaxDrawnTriangles - triangles : 0;
-                const std::size_t stride =
-                    room == 0 ? 1 : std::max<std::size_t>(1, (m.triangles.size() + room - 1) / room);
-                for (std::size_t k = 0; room > 0 && k < m.triangles.size(); k += stride) {
-                    const auto& t = m.triangles[k];
-                    scene.faces3.push_back({{m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]},
-                                            style,
-                                            0.5f,
-                                            true,
-                                            true});
-                }
-                triangles += m.triangles.size();
-                break;
-            }
-            case rt::ObjectKind::Csg:  // every primitive of the tree, fainter than a solid
-                for (std::size_t k = 0; k < o.csg.nodes.size(); ++k)
-                    if (o.csg.nodes[k].leaf)
-                        add_csg_leaf_mesh(o.csg, static_cast<int>(k), extent, style, 0.2f,
-                                          scene.faces3);
-                break;
-        }
-    }
-    if (triangles > kMaxDrawnTriangles)
-        scene.labels3.push_back({sc.camera.center,
-                                 std::to_string(triangles) + " triangles: about " +
-                                     std::to_string(kMaxDrawnTriangles) + " of them drawn",
-                                 {Role::Construction}});
-    for (std::size_t k = 0; k < sc.lights.size(); ++k) {
-        const rt::Light& l = sc.lights[k];
-        const std::string name = "light " + std::to_string(k);
-        if (l.directional) {
-            const dvec3 from = sc.camera.center - 0.8 * extent * unit(l.direction);
-            scene.segments3.push_back({from,
-                                       from + 0.3 * extent * unit(l.direction),
-                                       name,
-                                       {Role::Active, 2.0f, true},
-                                       true});
-        } else {
-            scene.points3.push_back({l.position, name, {Role::Active}, 7.0f});
-        }
-        if (l.area == rt::Light::Area::Rectangle) {
-            const dvec3 a = 0.5 * l.edge_u, b = 0.5 * l.edge_v;
-            scene.faces3.push_back(
-                {{l.position - a - b, l.position + a - b, l.position + a + b, l.position - a + b},
-                 {Role::Active, 1.5f},
-                 0.35f,
-                 true,
-                 true});
-        } else if (l.area == rt::Light::Area::Disc) {
-            const dvec3 n3 = unit(l.normal);
-            const dvec3 e1 = unit(std::fabs(n3.x) < 0.9 ? glm::cross(n3, dvec3(1, 0, 0))
-                                                        : glm::cross(n3, dvec3(0, 1, 0)));
-            const dvec3 e2 = glm::cross(n3, e1);
-            std::vector<dvec3> rim;
-            for (int q = 0; q < 24; ++q)
-                rim.push_back(l.position + l.radius * (std::cos(q * M_PI / 12) * e1 +
-                                                       std::sin(q * M_PI / 12) * e2));
-            scene.faces3.push_back({std::move(rim), {Role::Active, 1.5f}, 0.35f, true, true});
-        }
-    }
-}
-
-// The eye and the virtual screen (at distance 1 along the view direction), and the pixel.
-void draw_camera(const rt::Prepared& p, int i, int j, Scene& scene) {
-    const rt::View& v = p.view;
-    const dvec3 c00 = rt::screen_point(v, 0, 0), c10 = rt::screen_point(v, v.width, 0),
-                c11 = rt::screen_point(v, v.width, v.height),
-                c01 = rt::screen_point(v, 0, v.height);
-    scene.points3.push_back({v.eye, "E", {Role::Neutral}, 6.0f});
-    scene.faces3.push_back({{c00, c10, c11, c01}, {Role::Window, 1.0f}, 0.08f, true, true});
-    if (i >= 0 && j >= 0)
-        scene.faces3.push_back({{rt::screen_point(v, i, j), rt::screen_point(v, i + 1, j),
-                                 rt::screen_point(v, i + 1, j + 1), rt::screen_point(v, i, j + 1)},
-                                {Role::Active, 1.5f},
-                                0.9f,
-                                true,
-                                true});
-}
-
-Role ray_role(const RayTracer::RayNode& n) {
-    switch (n.kind) {
-        case RayKind::Primary:
-            return Role::Active;
-        case RayKind::Shadow:
-            return n.blocker >= 0 ? Role::Discarded : Role::Kept;
-        case RayKind::Reflected:
-            return Role::Entering;
-        case RayKind::Refracted:
-            return Role::Leaving;
-    }
-    return Role::Neutral;
-}
-
-void draw_tree(const RayTracer::State& s, double extent, Scene& scene) {
-    const rt::Scene& sc = s.in->scene;
-    for (std::size_t k = 0; k < s.tree.size(); ++k) {
-        const RayTracer::RayNode& n = s.tree[k];
-        const std::string label = ray_label(s.tree, static_cast<int>(k));
-        const bool active = static_cast<int>(k) == s.active;
-        const float width = active ? 3.0f : 1.8f;
-        const dvec3 d = unit(n.direction);
-        if (n.kind == RayKind::Shadow) {
-            const rt::Light& l = sc.lights[n.light];
-            const dvec3 end = l.directional         ? n.origin + 0.6 * extent * d
-                              : n.light_sample >= 0 ? n.light_point
-                                                    : l.position;
-            if (n.blocker >= 0) {
-                const double t = rt::intersect_object(s.prepared->objects[n.blocker], n.origin,
-                                                      n.direction, kRayEpsilon);
-                const dvec3 stop = n.origin + t * n.direction;
-                scene.segments3.push_back({n.origin, stop, label, {Role::Discarded, width}, true});
-                scene.segments3.push_back({stop, end, "", {Role::Construction, 1.0f, true}, false});
-                scene.points3.push_back({stop, "", {Role::Discarded}, 4.0f});
-            } else {
-                scene.segments3.push_back({n.origin, end, label, {Role::Kept, width, true}, true});
-            }
-            continue;
-        }
-        if (!n.traced) {  // cast, its hit not yet found: an arrow into the scene
-            scene.segments3.push_back(
-                {n.origin, n.origin + 0.5 * extent * d, label, {ray_role(n), width, true}, true});
-            continue;
-        }
-        if (n.hit.object < 0) {
-            scene.segments3.push_back({n.origin,
-                                       n.origin + 1.5 * extent * d,
-                                       label + " (miss)",
-                                       {ray_role(n), width},
-                                       true});
-            continue;
-        }
-        scene.segments3.push_back({n.origin, n.hit.point, label, {ray_role(n), width}, true});
-        scene.points3.push_back({n.hit.point, "", {ray_role(n)}, 5.0f});
-        if (active && sc.objects[n.hit.object].kind == rt::ObjectKind::Csg) {
-            // The solid's segments along the ray, as csg-ray draws them (clipped to t ≥ 0).
-            const CsgHit h = csg_intersect(*s.prepared->objects[n.hit.object].csg, n.origin,
-                                           n.direction);
-            for (const CsgSpan& sp : h.segments) {
-                const double a = std::max(0.0, sp.in.t),
-                             b = std::min(sp.out.t, 1.5 * extent / glm::length(n.direction));
-                if (a < b)
-                    scene.segments3.push_back({n.origin + a * n.direction,
-                                               n.origin + b * n.direction, "",
-                                               {Role::Kept, 5.0f}, false});
-            }
-        }
-        scene.segments3.push_back({n.hit.point,
-                                   n.hit.point + 0.12 * extent * n.hit.normal,
-                                   active ? "n" : "",
-                                   {Role::Neutral, 1.5f},
-                                   true});
-        if (n.detail >= 0 && s.details[n.detail].bumped)  // the bumped shading normal
-            scene.segments3.push_back({n.hit.point,
-                                       n.hit.point + 0.12 * extent * n.surface.normal,
-                                       active ? "n'" : "",
-                                       {Role::Active, 1.5f},
-                                       true});
-        if (n.returned && (active || k == 0))
-            scene.labels3.push_back({n.hit.point, num(n.color, 3), {Role::Neutral}});
-    }
-}
-
-}  // namespace
-
-// 2D: the image (the pixel being computed outlined). 3D: the scene's objects and lights, the eye
-// and the virtual screen, and the pixel's rays (ray-tree: the whole tree so far).
-namespace {
-
-void draw_box(const dvec3& lo, const dvec3& hi, const Style& style, Scene& scene) {
-    auto corner = [&](int c) {
-        return dvec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
-    };
-    for (int c = 0; c < 8; ++c)
-        for (int axis = 1; axis < 8; axis <<= 1)
-            if (!(c & axis)) scene.segments3.push_back({corner(c), corner(c | axis), "", style});
-}
-
-// The build step's picture: the object tree's boxes down to depth 3 (the root's bolder), and
-// each mesh's box with its four children's.
-void draw_hierarchy(const rt::Scene& sc, const rt::Prepared& p, Scene& scene) {
-    const rt::ObjectBvh& b = p.bvh;
-    struct Item {
-        int node, depth;
-    };
-    std::vector<Item> todo;
-    if (!b.nodes.empty()) todo.push_back({0, 0});
-    while (!todo.empty()) {
-        const Item it = todo.back();
-        todo.pop_back();
-        const rt::BvhNode& n = b.nodes[it.node];
-        const Style style{it.depth == 0 ? Role::Active : Role::Construction,
-                          it.depth == 0 ? 2.0f : 1.0f};
-        draw_box(n.box.min, n.box.max, style, scene);
-        if (n.count > 0 || it.depth >= 3) continue;
-        todo.push_back({it.node + 1, it.depth + 1});
-        todo.push_back({n.right, it.depth + 1});
-    }
-    for (const rt::Object& o : sc.objects) {
-        if (o.kind != rt::ObjectKind::Mesh) continue;
-        const rt::MeshBvh& m = o.mesh->bvh;
-        draw_box(dvec3(m.root_lo[0], m.root_lo[1], m.root_lo[2]),
-                 dvec3(m.root_hi[0], m.root_hi[1], m.root_hi[2]), {Role::Active, 2.0f}, scene);
-        if (m.root_count > 0 || m.nodes.empty()) continue;
-        const rt::MeshNode& n = m.nodes[static_cast<std::size_t>(m.root)];
-        for (int k = 0; k < 4; ++k)
-            if (n.count[k] >= 0)
-                draw_box(dvec3(n.lo[0][k], n.lo[1][k], n.lo[2][k]),
-                         dvec3(n.hi[0][k], n.hi[1][k], n.hi[2][k]), {Role::Construction, 1.0f},
-                         scene);
-    }
-}
-
-}  // namespace
-
-void RayTracer::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const rt::Scene& sc = in.scene;
-    const int W = sc.camera.width, H = sc.camera.height;
-    const double extent = scene_extent(sc);
-
-    PixelGrid2 grid;
-    grid.width = W;
-    grid.height = H;
-    grid.grid_lines = W * H <= 128 * 96;
-    int hi = -1, hj = -1;  // the highlighted pixel
-    if (in.granularity == Granularity::RayTree) {
-        if (!s.preview->empty()) {
-            grid.rgba = *s.preview;
-            for (auto& v : grid.rgba) v = (v & 0xffffff00u) | 0x60u;  // dimmed: not computed here
-        } else {
-            grid.rgba.assign(static_cast<std::size_t>(W) * H, 0u);
-        }
-        if (!in.explicit_ray) {
-            hi = s.pixel_i, hj = s.pixel_j;
-            if (s.phase == Phase::Done)
-                grid.rgba[static_cast<std::size_t>(hj) * W + hi] = pack_rgba(s.pixel_color);
-            scene.handles.push_back({{s.pixel_i + 0.5, s.pixel_j + 0.5},
-                                     "pixel",
-                                     "/stepping/pixel/0",
-                                     "/stepping/pixel/1"});
-        }
-    } else {
-        grid.rgba = s.image.pixels();
-        hi = s.last_i, hj = s.last_j;
-    }
-    scene.grids.push_back(std::move(grid));
-    if (hj >= 0) {
-        const double x0 = hi >= 0 ? hi : 0, x1 = hi >= 0 ? hi + 1 : W;
-        scene.polygons.push_back({{{x0, hj}, {x1, hj}, {x1, hj + 1.0}, {x0, hj + 1.0}},
-                                  {Role::Active, 2.5f},
-                                  true,
-                                  false});
-    }
-    scene.labels.push_back(
-        {{0, H + 0.6}, std::to_string(W) + " × " + std::to_string(H) + " pixels", {Role::Neutral}});
-
-    draw_objects(sc, extent, scene);
-    if (s.last_event == Event::Build) draw_hierarchy(sc, *s.prepared, scene);
-    draw_camera(*s.prepared, hi, hj, scene);
-    if (sc.camera.aperture > 0) {  // the thin lens, across the view direction at the eye
-        const rt::View& v = s.prepared->view;
-        std::vector<dvec3> rim;
-        for (int q = 0; q < 24; ++q)
-            rim.push_back(v.eye + sc.camera.aperture * (std::cos(q * M_PI / 12) * v.u +
-                                                        std::sin(q * M_PI / 12) * v.v));
-        scene.faces3.push_back({std::move(rim), {Role::Window, 1.5f}, 0.3f, true, true});
-        scene.labels3.push_back({v.eye + sc.camera.aperture * v.v, "lens", {Role::Window}});
-    }
-    if (in.granularity == Granularity::RayTree) {
-        draw_tree(s, extent, scene);
-    } else if (s.last_i >= 0) {  // the last pixel's primary ray, to its hit
-        const rt::Prepared& p = *s.prepared;
-        const dvec3 P = rt::screen_point(p.view, s.last_i + 0.5, s.last_j + 0.5);
-        const rt::Hit h = rt::nearest_hit(p, p.view.eye, P - p.view.eye);
-        const dvec3 end =
-            h.object >= 0 ? h.point : p.view.eye + 1.5 * extent * unit(P - p.view.eye);
-        scene.segments3.push_back({p.view.eye, end, "", {Role::Active, 2.0f}, true});
-    }
-    scene.extent3 = 0.6 * extent;
 }
 
 // ---- [result] -------------------------------------------------------------------------------

@@ -84,6 +84,8 @@ struct RayTracer {
         glm::dvec3 light_point{0.0};  // a shadow ray's end on an area light
         bool operator==(const RayNode&) const = default;
     };
+    // The ray's name in the tree: R0 for the primary ray, then S/M/T with its index.
+    static std::string ray_label(const std::vector<RayNode>& tree, int k);
 
     // A ray being traced, and what comes next for it.
     enum class Next : std::uint8_t { Cast, Texture, Light, Secondary, Refract, Return };
@@ -148,6 +150,7 @@ struct RayTracer {
         int last_i = -1, last_j = -1;  // the pixel (or row, last_i = -1) just computed
         rt::Color last_color{0.0};
         rt::RayCounts rays;
+        std::vector<rt::RayCounts> row_rays;  // pixels/rows: the rays each row cost (height)
         // ray-tree
         int pixel_i = 0, pixel_j = 0;
         std::vector<RayNode> tree;
@@ -198,7 +201,8 @@ struct RayTracer {
     static std::size_t bytes(const State& s) {
         return s.image.bytes() + s.tree.capacity() * sizeof(RayNode) +
                s.details.capacity() * sizeof(rt::SurfaceDetail) +
-               s.stack.capacity() * sizeof(Frame) + s.samples.capacity() * sizeof(rt::PixelSample);
+               s.stack.capacity() * sizeof(Frame) + s.samples.capacity() * sizeof(rt::PixelSample) +
+               s.row_rays.capacity() * sizeof(rt::RayCounts);
     }
 
     // Exam practice (ray_tracer_exam.cpp): one ray into a small scene, traced by hand; or, for

@@ -703,16 +703,18 @@ TEST_CASE("ray-tracer: scenes too big to run are refused with their limit",
     deep.materials[0].kt = dvec3(0.5);
     deep.lights.resize(3, deep.lights[0]);
     deep.objects.resize(200, deep.objects[0]);
-    CHECK_THROWS_WITH(rt::validate(deep),
-                      Catch::StartsWith("settings.max_depth: makes one pixel cost up to 104856800 "
-                                        "ray-object tests (131071 rays per tree × 4 for the lights × "
-                                        "200 objects); the limit is 1e7"));
+    CHECK_THROWS_WITH(
+        rt::validate(deep),
+        Catch::StartsWith("settings.max_depth: makes one pixel cost up to 104856800 "
+                          "ray-object tests (131071 rays per tree × 4 for the lights × "
+                          "200 objects); the limit is 1e7"));
     deep.settings.max_depth = 3;  // 15 rays per tree: fine per pixel, but 4096² pixels are not
     rt::validate(deep);
     deep.camera.width = deep.camera.height = 4096;
-    CHECK_THROWS_WITH(rt::validate(deep),
-                      Catch::StartsWith("camera.size: makes the image cost up to 201326592000 ray-object "
-                                        "tests (4096×4096 pixels × 12000 per pixel); the limit is 2e10"));
+    CHECK_THROWS_WITH(
+        rt::validate(deep),
+        Catch::StartsWith("camera.size: makes the image cost up to 201326592000 ray-object "
+                          "tests (4096×4096 pixels × 12000 per pixel); the limit is 2e10"));
     // Only mirrors: a chain, max_depth + 1 rays.
     deep.materials[0].kt = dvec3(0.0);
     CHECK(rt::tree_rays(deep) == 4);
@@ -862,14 +864,60 @@ TEST_CASE("ray-tracer: the picture shows the image, the scene and the ray tree",
         ++steps;
         cg::Scene pic;
         run->draw(pic);
-        CHECK(pic.grids.size() == 1);
-        CHECK(pic.grids[0].width == 48);
+        CHECK_FALSE(pic.has_2d());  // nothing on the world's grid
+        // The image (a preview) in a panel of its own, the pixel outlined in its cells, and the
+        // ray tree as a diagram below it.
+        REQUIRE(pic.panels.size() == 2);
+        const cg::Panel& image = pic.panels[0];
+        CHECK(image.kind == cg::PanelKind::Image);
+        REQUIRE(image.grids.size() == 1);
+        CHECK(image.grids[0].width == 48);
+        REQUIRE(image.polygons.size() == 1);
+        CHECK(image.polygons[0].style.role == cg::Role::Active);
+        CHECK(pic.panels[1].kind == cg::PanelKind::Image);
         CHECK(pic.has_3d());
-        CHECK(pic.handles.size() == 1);  // drag the pixel
+        CHECK(pic.focus3.size() == 1);  // the camera frames the step's rays
     }
     cg::Scene pic;
     run->draw(pic);
-    // The tree: the primary ray, shadow rays, the mirror ray...
+    // The tree: the primary ray, shadow rays, the mirror ray... in 3D and in the diagram, one
+    // node each.
     CHECK(pic.segments3.size() >= 4);
+    const auto result =
+        cg::RayTracer::result(static_cast<const cg::RunOf<cg::RayTracer>&>(*run).state);
+    CHECK(pic.panels[1].points.size() == result.tree.size());
     CHECK(steps >= 6);
+}
+
+TEST_CASE("ray-tracer: rows show the rays each row cost; a distributed pixel shows its samples",
+          "[rays][ray-tracer]") {
+    cg::json in = tracer().example();
+    in["stepping"] = {{"granularity", "rows"}};
+    auto run = tracer().create(in);
+    for (int k = 0; k < 4; ++k) run->step(nullptr);
+    cg::Scene pic;
+    run->draw(pic);
+    REQUIRE(pic.panels.size() == 2);
+    const cg::Panel& chart = pic.panels[1];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.x.label == "row j");
+    CHECK_FALSE(chart.polygons.empty());  // stacked bars, one a kind of ray
+    CHECK(chart.legend.front().text == "primary");
+
+    // Four jittered samples: the pixel magnified with one dot a sample, the one in hand orange.
+    in = tracer().example();
+    in["settings"]["samples_per_pixel"] = 4;
+    run = tracer().create(in);
+    for (int k = 0; k < 3; ++k) run->step(nullptr);
+    cg::Scene dist;
+    run->draw(dist);
+    REQUIRE(dist.panels.size() == 2);
+    int dots = 0, active = 0;
+    for (const auto& p : dist.panels[1].points) {
+        ++dots;
+        active += p.style.role == cg::Role::Active;
+        CHECK(p.radius >= 4);  // big enough to see
+    }
+    CHECK(dots == 4);
+    CHECK(active == 1);
 }
