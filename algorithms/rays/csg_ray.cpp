@@ -1,4 +1,5 @@
-// Sections: [text] [spec] [validate and start] [advance] [narrate] [draw]
+// Sections: [text] [spec] [validate and start] [advance] [narrate]; the picture (and the
+// leaves' meshes the ray tracer draws too) is in csg_ray_draw.cpp.
 #include "rays/csg_ray.hpp"
 
 #include <algorithm>
@@ -7,7 +8,6 @@
 #include <glm/vec4.hpp>
 
 #include "core/format.hpp"
-#include "rays/quadric_mesh.hpp"
 #include "rays/ray_quadric.hpp"
 
 namespace cg {
@@ -15,7 +15,6 @@ namespace cg {
 namespace {
 
 using glm::dmat4;
-using glm::dvec2;
 using glm::dvec3;
 using Phase = CsgRay::Phase;
 
@@ -123,7 +122,8 @@ const Spec& CsgRay::spec() {
             "  node: L ← L_left op L_right   ▷ ∪: in A or B;  ∩: in A and B;  −: in A, not in B",
             "        sweep the ends in t order: touching segments join, empty ones vanish",
             "hit ← the first end of L_root with t > ε (the eye inside: where the ray leaves)",
-            "n ← normalize((M⁻¹)ᵀ ∇F) of that end's surface; reversed if it came from a subtracted B",
+            "n ← normalize((M⁻¹)ᵀ ∇F) of that end's surface; reversed if it came from a subtracted "
+            "B",
         },
         {
             {"leaf", "a primitive: the ray in its frame, its roots and the segments inside it"},
@@ -138,23 +138,26 @@ const Spec& CsgRay::spec() {
         },
         {},  // no sliders
         {
-            .predict = {
-                {"leaf", {}},
-                {"hit", {"t", "n"}},
-                {"difference", {}},
-                {"union", {}},
-                {"intersection", {}},
-            },
-            .mistakes = {
-                {"hit", "n", "negate", "kept B's outward normal where A − B shows B's inside"},
-                {"difference", "A", "swap:B", "worked out B − A instead of A − B"},
-                {"leaf", "b", "negate", "took the sign of b wrong"},
-            },
-            .variants = {
-                {"union", "/tree/op", "\"union\""},
-                {"intersection", "/tree/op", "\"intersection\""},
-                {"difference", "/tree/op", "\"difference\""},
-            },
+            .predict =
+                {
+                    {"leaf", {}},
+                    {"hit", {"t", "n"}},
+                    {"difference", {}},
+                    {"union", {}},
+                    {"intersection", {}},
+                },
+            .mistakes =
+                {
+                    {"hit", "n", "negate", "kept B's outward normal where A − B shows B's inside"},
+                    {"difference", "A", "swap:B", "worked out B − A instead of A − B"},
+                    {"leaf", "b", "negate", "took the sign of b wrong"},
+                },
+            .variants =
+                {
+                    {"union", "/tree/op", "\"union\""},
+                    {"intersection", "/tree/op", "\"intersection\""},
+                    {"difference", "/tree/op", "\"difference\""},
+                },
         },
     };
     return spec;
@@ -186,8 +189,10 @@ void CsgRay::validate(const Input& in) {
     // The ray itself must be of a size whose squares neither overflow nor underflow ...
     const double dw = max_abs(in.direction), ow = max_abs(in.origin);
     if (!(dw >= 1e-100 && dw <= 1e100))
-        throw InputError("direction", "is too small or too large for double precision (largest "
-                                      "component " + given(dw) + ")");
+        throw InputError("direction",
+                         "is too small or too large for double precision (largest "
+                         "component " +
+                             given(dw) + ")");
     if (!(ow <= 1e100))
         throw InputError("origin", "is too far away for double precision (" + given(ow) + ")");
     // ... and so must it be in every leaf's frame: a transform that takes it out of range is
@@ -202,9 +207,10 @@ void CsgRay::validate(const Input& in) {
             (n.kind == CsgPrimitive::Quadric &&
              (!std::isfinite(q.a) || !std::isfinite(q.b) || !std::isfinite(q.c) ||
               !std::isfinite(q.b * q.b - 4 * q.a * q.c))))
-            throw InputError(n.path, "is placed so that the ray is too large or too small for "
-                                     "double precision in its frame (E_m = " + given(q.origin) +
-                                     ", d_m = " + given(q.direction) + ")");
+            throw InputError(n.path,
+                             "is placed so that the ray is too large or too small for "
+                             "double precision in its frame (E_m = " +
+                                 given(q.origin) + ", d_m = " + given(q.direction) + ")");
     }
 }
 
@@ -240,9 +246,9 @@ void CsgRay::advance(State& s) {
         case Phase::Nodes: {  // one node: a leaf's intersection, or a node's merge
             const int k = s.next++;
             const PreparedCsgNode& n = p.nodes[k];
-            s.lists[k] = n.leaf ? leaf_spans(p.leaves[n.leaf_index], n.leaf_index, in.origin,
-                                             in.direction)
-                                : combine(n.op, s.lists[n.left], s.lists[n.right]);
+            s.lists[k] =
+                n.leaf ? leaf_spans(p.leaves[n.leaf_index], n.leaf_index, in.origin, in.direction)
+                       : combine(n.op, s.lists[n.left], s.lists[n.right]);
             s.last = k;
             if (s.next == static_cast<int>(p.nodes.size())) s.phase = Phase::Hit;
             return;
@@ -311,8 +317,8 @@ void narrate_leaf(const CsgRay::State& s, int k, StepInfo& info) {
         text += "F(E_m + t d_m) = " + quadratic_text(q.a, q.b, q.c) + ": ";
         switch (r.kind) {
             case QuadraticCase::TwoRoots:
-                text += "roots " + root_list(r) + (q.a > 0 ? ", F < 0 between them" :
-                                                   ", F < 0 outside them (a < 0)");
+                text += "roots " + root_list(r) +
+                        (q.a > 0 ? ", F < 0 between them" : ", F < 0 outside them (a < 0)");
                 break;
             case QuadraticCase::Tangent:
                 text += "a double root t = " + num(r.t[0]) +
@@ -390,9 +396,10 @@ void narrate_node(const CsgRay::State& s, int k, StepInfo& info) {
     const std::string expression = a + " " + csg_op_symbol(n.op) + " " + b;
     info.narration = (name == expression ? name : name + " = " + expression) + ": " + a + " = " +
                      csg_spans_text(s.lists[n.left]) + ", " + b + " = " +
-                     csg_spans_text(s.lists[n.right]) + "; sweeping their ends in t order and "
-                     "keeping what is " + rule + " gives " + name + " = " +
-                     csg_spans_text(s.lists[k]) + ".";
+                     csg_spans_text(s.lists[n.right]) +
+                     "; sweeping their ends in t order and "
+                     "keeping what is " +
+                     rule + " gives " + name + " = " + csg_spans_text(s.lists[k]) + ".";
     if (n.op == CsgOp::Difference)
         info.narration += " An end taken from " + b + " has its normal reversed.";
     info.vars.push_back({"node", n.path});
@@ -458,191 +465,6 @@ void CsgRay::narrate(const State& s, StepInfo& info) {
         narrate_leaf(s, s.last, info);
     else
         narrate_node(s, s.last, info);
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-namespace {
-
-dvec3 apply(const dmat4& m, dvec3 p) {
-    return dvec3(m * glm::dvec4(p, 1.0));
-}
-
-}  // namespace
-
-// A quadric's mesh between its caps (or within ±reach), a box's six faces.
-void add_csg_leaf_mesh(const CsgTree& t, int k, double reach, Style style, float alpha,
-                       std::vector<Face3>& faces) {
-    const CsgNode& n = t.nodes[k];
-    const dmat4 m = csg_world_from_leaf(t, k);
-    if (n.kind == CsgPrimitive::Box) {
-        const Box& b = n.box;
-        auto corner = [&](int i) {
-            return apply(m, {i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y,
-                             i & 4 ? b.max.z : b.min.z});
-        };
-        static const int quads[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
-                                        {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
-        for (const auto& q : quads)
-            faces.push_back({{corner(q[0]), corner(q[1]), corner(q[2]), corner(q[3])}, style,
-                             alpha, true, true});
-        return;
-    }
-    Quadric q = n.quadric;
-    q.world_from_model = m;
-    double z_lo, z_hi;
-    drawn_z_range(q, reach, z_lo, z_hi);
-    add_quadric_mesh(q, z_lo, z_hi, style, alpha, 16, 8, faces);
-}
-
-namespace {
-
-// Whether leaf node `leaf` lies in the subtree of node `k` (post-order: a subtree is the
-// contiguous run of nodes ending at its root, as long as its own leaves).
-bool in_subtree(const CsgTree& t, int k, int leaf) {
-    if (leaf > k) return false;
-    int lo = k;
-    std::vector<int> stack{k};
-    while (!stack.empty()) {
-        const int j = stack.back();
-        stack.pop_back();
-        lo = std::min(lo, j);
-        if (!t.nodes[j].leaf) stack.push_back(t.nodes[j].left), stack.push_back(t.nodes[j].right);
-    }
-    return leaf >= lo;
-}
-
-struct Range {
-    double lo = 0, hi = 1;
-};
-
-// The t range worth drawing: the eye (t = 0) and every finite end computed so far.
-Range t_range(const CsgRay::State& s) {
-    Range r{0, 0};
-    for (const CsgSpans& l : s.lists)
-        for (const CsgSpan& sp : l)
-            for (double t : {sp.in.t, sp.out.t})
-                if (std::isfinite(t) && std::fabs(t) < 1e12)
-                    r.lo = std::min(r.lo, t), r.hi = std::max(r.hi, t);
-    if (!(r.hi > r.lo)) r.hi = r.lo + 1;
-    const double pad = 0.12 * (r.hi - r.lo);
-    r.lo -= pad, r.hi += pad;
-    return r;
-}
-
-// One list on the t strip at height y: the axis, its segments, its label.
-void strip_row(const CsgSpans& l, const std::string& label, double y, Range r, double h, Role role,
-               bool active, Scene& scene) {
-    scene.segments.push_back({{r.lo, y}, {r.hi, y}, "", {Role::Construction, 1.0f}, false});
-    for (const CsgSpan& sp : l) {
-        const double a = std::max(r.lo, sp.in.t), b = std::min(r.hi, sp.out.t);
-        if (!(a < b)) continue;
-        scene.segments.push_back(
-            {{a, y}, {b, y}, "", {role, active ? 7.0f : 4.0f}, !std::isfinite(sp.out.t)});
-        if (std::isfinite(sp.in.t))
-            scene.labels.push_back({{a, y + 0.3 * h}, num(sp.in.t, 4), {role}});
-        if (std::isfinite(sp.out.t))
-            scene.labels.push_back({{b, y + 0.3 * h}, num(sp.out.t, 4), {role}});
-    }
-    scene.labels.push_back(
-        {{r.lo - 0.02 * (r.hi - r.lo), y + 0.3 * h}, label, {active ? Role::Active : Role::Neutral}});
-}
-
-}  // namespace
-
-// 3D: the leaves' solids translucent (those of the node in hand in orange), the ray as a thin
-// line with the segments of the current list thick and green, what the node's operation threw
-// away red, the hit and its normal. 2D: the t axis, one row per list computed so far (the
-// current step's highlighted), t = 0 at the eye.
-void CsgRay::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const CsgTree& t = in.tree;
-    const Range r = t_range(s);
-    const dvec3 E = in.origin, d = in.direction;
-    const double speed = glm::length(d);
-    const double reach = std::max(2.0, 0.6 * (r.hi - r.lo) * speed + glm::length(E));
-    const int focus = s.last >= 0 ? s.last : static_cast<int>(t.nodes.size()) - 1;
-
-    for (std::size_t k = 0; k < t.nodes.size(); ++k) {
-        if (!t.nodes[k].leaf) continue;
-        const bool active = s.last >= 0 && in_subtree(t, focus, static_cast<int>(k));
-        add_csg_leaf_mesh(t, static_cast<int>(k), reach,
-                  {active ? Role::Active : Role::Subject, 1.0f}, active ? 0.22f : 0.12f,
-                  scene.faces3);
-    }
-    scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, "", 0.5f});
-
-    // The ray, and the current list along it.
-    scene.segments3.push_back(
-        {E + r.lo * d, E + r.hi * d, "E + t d", {Role::Construction, 1.0f}, true});
-    scene.points3.push_back({E, "E", {Role::Active}, 5.0f});
-    const bool computed = s.last >= 0 || s.phase == Phase::Done;
-    if (computed) {
-        const CsgSpans& now = s.lists[focus];
-        auto along = [&](const CsgSpans& l, Role role, float width) {
-            for (const CsgSpan& sp : l) {
-                const double a = std::max(r.lo, sp.in.t), b = std::min(r.hi, sp.out.t);
-                if (!(a < b)) continue;
-                scene.segments3.push_back({E + a * d, E + b * d, "", {role, width}, false});
-                if (std::isfinite(sp.in.t))
-                    scene.points3.push_back({E + a * d, num(sp.in.t, 4), {role}, 4.0f});
-                if (std::isfinite(sp.out.t))
-                    scene.points3.push_back({E + b * d, num(sp.out.t, 4), {role}, 4.0f});
-            }
-        };
-        const CsgNode& n = t.nodes[focus];
-        if (!n.leaf && s.last >= 0) {  // what the operation threw away, then what it kept
-            const CsgSpans all = combine(CsgOp::Union, s.lists[n.left], s.lists[n.right]);
-            along(combine(CsgOp::Difference, all, now), Role::Discarded, 4.0f);
-        }
-        along(now, Role::Kept, 5.0f);
-    }
-    if (s.phase == Phase::Done && s.hit.hit) {
-        scene.points3.push_back({s.hit.point, "P", {Role::Kept}, 7.0f});
-        if (s.hit.has_normal)
-            scene.segments3.push_back({s.hit.point, s.hit.point + 0.5 * reach / 2 * s.hit.normal,
-                                       "n", {Role::Kept, 2.5f}, true});
-    }
-    scene.extent3 = 0.6 * reach;
-
-    // 2D: the t strip.
-    const double h = 0.12 * (r.hi - r.lo);  // between rows: a name above, the ends' values below
-    std::vector<int> rows;
-    const int computed_nodes = s.phase == Phase::Nodes ? s.next : static_cast<int>(t.nodes.size());
-    if (computed_nodes <= 15) {
-        for (int k = 0; k < computed_nodes; ++k) rows.push_back(k);
-    } else if (s.last >= 0) {  // a big tree: only the step in hand
-        const CsgNode& n = t.nodes[s.last];
-        if (!n.leaf) rows = {n.left, n.right};
-        rows.push_back(s.last);
-    } else {
-        rows.push_back(static_cast<int>(t.nodes.size()) - 1);
-    }
-    double y = -h;  // below the canvas's own x axis
-    for (int k : rows) {
-        const CsgNode& n = t.nodes[k];
-        bool active = k == s.last;
-        if (s.last >= 0 && !t.nodes[s.last].leaf)
-            active = active || k == t.nodes[s.last].left || k == t.nodes[s.last].right;
-        if (s.last < 0 && s.phase == Phase::Done) active = k == static_cast<int>(t.nodes.size()) - 1;
-        const Role role = !active ? Role::Subject : (k == s.last || s.last < 0 ? Role::Kept
-                                                                                : Role::Entering);
-        std::string label = csg_node_label(n);
-        if (!n.leaf)
-            label += " = " + csg_node_label(t.nodes[n.left]) + " " + csg_op_symbol(n.op) + " " +
-                     csg_node_label(t.nodes[n.right]);
-        strip_row(s.lists[k], label, y, r, h, role, active, scene);
-        y -= h;
-    }
-    scene.segments.push_back({{0, 0.5 * h}, {0, y + 0.5 * h}, "", {Role::Construction, 1.0f, true},
-                              false});
-    scene.labels.push_back({{0, 0.9 * h}, "t = 0 (the eye)", {Role::Construction}});
-    scene.segments.push_back({{r.lo, y}, {r.hi, y}, "t", {Role::Neutral, 1.0f}, true});
-    if (s.phase == Phase::Done && s.hit.hit) {
-        scene.segments.push_back(
-            {{s.hit.t, 0.5 * h}, {s.hit.t, y}, "", {Role::Kept, 1.5f, true}, false});
-        scene.points.push_back({{s.hit.t, y}, "hit t = " + num(s.hit.t, 4), {Role::Kept}, 6.0f});
-    }
 }
 
 }  // namespace cg

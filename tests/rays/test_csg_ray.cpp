@@ -8,9 +8,9 @@
 // plain functions; errors naming the path; exam problems; determinism and the picture.
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <fstream>
 #include <functional>
+#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -33,8 +33,9 @@ using glm::dvec3;
 namespace {
 
 // A number as JSON text (cg::num is for students' eyes: "−1", "10⁻⁵").
-std::string jnum(double x, int = 17) { return cg::json(x).dump(); }
-
+std::string jnum(double x, int = 17) {
+    return cg::json(x).dump();
+}
 
 using cg::test::events;
 using cg::test::registry;
@@ -65,9 +66,9 @@ std::string sphere(double r, dvec3 c = dvec3(0.0), const std::string& name = "")
 }
 
 std::string box(dvec3 lo, dvec3 hi, const std::string& name = "") {
-    std::string s = R"({"primitive": {"type": "box", "min": [)" + jnum(lo.x) + ", " +
-                    jnum(lo.y) + ", " + jnum(lo.z) + "], \"max\": [" + jnum(hi.x) +
-                    ", " + jnum(hi.y) + ", " + jnum(hi.z) + "]}";
+    std::string s = R"({"primitive": {"type": "box", "min": [)" + jnum(lo.x) + ", " + jnum(lo.y) +
+                    ", " + jnum(lo.z) + "], \"max\": [" + jnum(hi.x) + ", " + jnum(hi.y) + ", " +
+                    jnum(hi.z) + "]}";
     if (!name.empty()) s += R"(, "name": ")" + name + "\"";
     return s + "}";
 }
@@ -138,8 +139,8 @@ TEST_CASE("csg-ray: the rules for touching, tangent and unbounded segments", "[r
         CHECK(near(r.result["normal"], {0, 0, -1}));
     }
     SECTION("a tangent sphere gives a zero-length segment, dropped") {
-        const Run r = run_json(input(node("union", sphere(1), box({-0.5, -0.5, 2}, {1.5, 0.5, 3})),
-                                     {1, 0, -5}, d));
+        const Run r = run_json(
+            input(node("union", sphere(1), box({-0.5, -0.5, 2}, {1.5, 0.5, 3})), {1, 0, -5}, d));
         CHECK(events(r) == Events{"tangent", "leaf", "union", "hit"});
         CHECK(r.result["lists"]["tree.left"] == spans("[]"));
         CHECK(r.result["segments"] == spans("[[7, 8]]"));
@@ -155,10 +156,11 @@ TEST_CASE("csg-ray: the rules for touching, tangent and unbounded segments", "[r
         CHECK(events(miss).front() == "leaf-miss");
     }
     SECTION("an open cone holds the ray at both ends: null ends") {
-        const Run r = run_json(input(
-            node("intersection", R"({"primitive": {"type": "cone", "params": {"p": 1, "q": 1, "r": 1}}})",
-                 box({-5, -5, 0.5}, {5, 5, 3})),
-            {0.25, 0, -6}, d));
+        const Run r = run_json(
+            input(node("intersection",
+                       R"({"primitive": {"type": "cone", "params": {"p": 1, "q": 1, "r": 1}}})",
+                       box({-5, -5, 0.5}, {5, 5, 3})),
+                  {0.25, 0, -6}, d));
         CHECK(r.result["lists"]["tree.left"] == spans("[[null, 5.75], [6.25, null]]"));
         CHECK(r.result["segments"] == spans("[[6.5, 9]]"));
         CHECK(r.result["t"] == 6.5);
@@ -186,8 +188,8 @@ TEST_CASE("csg-ray: the rules for touching, tangent and unbounded segments", "[r
         CHECK(near(side.result["normal"], {-1, 0, 0}));
     }
     SECTION("the eye inside: the hit is where the ray leaves") {
-        const Run r = run_json(input(node("union", sphere(2), box({-1, -1, 1}, {1, 1, 4})),
-                                     {0, 0, 0}, d));
+        const Run r =
+            run_json(input(node("union", sphere(2), box({-1, -1, 1}, {1, 1, 4})), {0, 0, 0}, d));
         CHECK(r.result["segments"] == spans("[[-2, 4]]"));
         CHECK(r.result["t"] == 4);
         CHECK(r.result["entering"] == false);
@@ -225,8 +227,9 @@ TEST_CASE("csg-ray: transforms apply to whole subtrees, t is the same in every f
           "[rays][csg-ray]") {
     // A cube [−1, 1]³ minus a sphere of radius 1.2, the pair turned a quarter about y and moved
     // by (1, 0, 0): the cube occupies x ∈ [0, 2], the sphere is centred at (1, 0, 0).
-    const std::string t = node("difference", box({-1, -1, -1}, {1, 1, 1}, "A"), sphere(1.2, {}, "B"),
-                               R"(, "transform": [[0, 0, 1, 1], [0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 0, 1]])");
+    const std::string t =
+        node("difference", box({-1, -1, -1}, {1, 1, 1}, "A"), sphere(1.2, {}, "B"),
+             R"(, "transform": [[0, 0, 1, 1], [0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 0, 1]])");
     const Run r = run_json(input(t, {-4, 0.6, 0.5}, {1, 0, 0}));
     const double h = std::sqrt(1.44 - 0.36 - 0.25);
     CHECK(r.result["lists"]["A"] == spans("[[4, 6]]"));
@@ -237,8 +240,8 @@ TEST_CASE("csg-ray: transforms apply to whole subtrees, t is the same in every f
     CHECK(near(r.result["normal"], {-1, 0, 0}));
     CHECK(r.steps[0].narration.find("In its frame") != std::string::npos);
     // The same solid built without transforms gives the same lists.
-    const std::string plain = node("difference", box({0, -1, -1}, {2, 1, 1}, "A"),
-                                   sphere(1.2, {1, 0, 0}, "B"));
+    const std::string plain =
+        node("difference", box({0, -1, -1}, {2, 1, 1}, "A"), sphere(1.2, {1, 0, 0}, "B"));
     const Run p = run_json(input(plain, {-4, 0.6, 0.5}, {1, 0, 0}));
     CHECK(p.result["lists"]["A"] == r.result["lists"]["A"]);
     CHECK(p.result["lists"]["B"][0][0].get<double>() ==
@@ -262,14 +265,16 @@ struct TreeGen {
     bool unbounded = true;  // now and then a cone, hyperboloid, open cylinder or paraboloid
 
     glm::dmat4 placement(bool scale) {
-        glm::dmat4 m = glm::translate(glm::dmat4(1.0), {rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5),
-                                                        rng.uniform(-1.5, 1.5)});
+        glm::dmat4 m = glm::translate(
+            glm::dmat4(1.0),
+            {rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5)});
         if (rng.chance(0.6))
-            m = glm::rotate(m, rng.uniform(0, 6.283),
-                            glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1),
-                                                 rng.uniform(0.1, 1))));
+            m = glm::rotate(
+                m, rng.uniform(0, 6.283),
+                glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(0.1, 1))));
         if (scale)
-            m = glm::scale(m, {rng.uniform(0.5, 1.8), rng.uniform(0.5, 1.8), rng.uniform(0.5, 1.8)});
+            m = glm::scale(m,
+                           {rng.uniform(0.5, 1.8), rng.uniform(0.5, 1.8), rng.uniform(0.5, 1.8)});
         return m;
     }
 
@@ -278,8 +283,9 @@ struct TreeGen {
         n.path = path, n.depth = depth;
         const double k = rng.uniform(0, 1);
         if (unbounded && k < 0.08) {  // an unbounded solid: ends at ±∞
-            static const cg::QuadricKind kinds[] = {cg::QuadricKind::Cone, cg::QuadricKind::Hyperboloid,
-                                                    cg::QuadricKind::Cylinder, cg::QuadricKind::Paraboloid};
+            static const cg::QuadricKind kinds[] = {
+                cg::QuadricKind::Cone, cg::QuadricKind::Hyperboloid, cg::QuadricKind::Cylinder,
+                cg::QuadricKind::Paraboloid};
             n.quadric.kind = kinds[rng.integer(0, 3)];
             n.quadric.a = rng.uniform(0.4, 1.5), n.quadric.b = rng.uniform(0.4, 1.5);
             n.quadric.c = rng.uniform(0.4, 1.5), n.quadric.p = rng.uniform(0.4, 1.5);
@@ -292,13 +298,14 @@ struct TreeGen {
         } else if (k < 0.7) {
             n.kind = cg::CsgPrimitive::Box;
             n.box.min = {rng.uniform(-2, 1), rng.uniform(-2, 1), rng.uniform(-2, 1)};
-            n.box.max = n.box.min + dvec3(rng.uniform(0.3, 2.5), rng.uniform(0.3, 2.5),
-                                          rng.uniform(0.3, 2.5));
+            n.box.max = n.box.min +
+                        dvec3(rng.uniform(0.3, 2.5), rng.uniform(0.3, 2.5), rng.uniform(0.3, 2.5));
             if (rng.chance(0.4)) n.has_transform = true, n.transform = placement(false);
         } else {
             n.quadric.kind = cg::QuadricKind::Cylinder;
             n.quadric.p = rng.uniform(0.3, 1.5), n.quadric.q = rng.uniform(0.3, 1.5);
-            n.quadric.zmin = rng.uniform(-2, 0), n.quadric.zmax = n.quadric.zmin + rng.uniform(0.5, 3);
+            n.quadric.zmin = rng.uniform(-2, 0),
+            n.quadric.zmax = n.quadric.zmin + rng.uniform(0.5, 3);
             n.quadric.world_from_model = placement(rng.chance(0.3));
         }
         n.leaf_index = t.leaves++;
@@ -350,8 +357,8 @@ TEST_CASE("csg-ray: 10,000 random rays through random trees agree with both refe
         if (t.nodes[aim].kind == cg::CsgPrimitive::Box)
             centre = glm::dvec3(cg::csg_world_from_leaf(t, aim) *
                                 glm::dvec4((t.nodes[aim].box.min + t.nodes[aim].box.max) / 2.0, 1));
-        const dvec3 target = centre + dvec3(rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7),
-                                            rng.uniform(-0.7, 0.7));
+        const dvec3 target =
+            centre + dvec3(rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7));
         const dvec3 d = (target - o) * rng.uniform(0.2, 3);
         CAPTURE(trial, o.x, o.y, o.z, d.x, d.y, d.z);
         ++total;
@@ -396,8 +403,8 @@ TEST_CASE("csg-ray: 10,000 random rays through random trees agree with both refe
             bool listed = false, near_end = false;
             for (const auto& s : h.segments) {
                 listed = listed || (s.in.t < ts && ts < s.out.t);
-                near_end = near_end || std::fabs(ts - s.in.t) <= step ||
-                           std::fabs(ts - s.out.t) <= step;
+                near_end =
+                    near_end || std::fabs(ts - s.in.t) <= step || std::fabs(ts - s.out.t) <= step;
             }
             if (brute != listed) CHECK(near_end);
             ++samples_checked;
@@ -422,7 +429,8 @@ TEST_CASE("csg-ray: 10,000 random rays through random trees agree with both refe
                 CHECK(std::fabs(m[axis] - plane) < 1e-9L * scale);
             } else if (h.end.face == 0) {
                 cg::Quadric q = leaf->quadric;
-                q.world_from_model = cg::csg_world_from_leaf(t, static_cast<int>(leaf - t.nodes.data()));
+                q.world_from_model =
+                    cg::csg_world_from_leaf(t, static_cast<int>(leaf - t.nodes.data()));
                 CHECK(cg::test::relative_residual(q, h.point) < 1e-9L);
             } else {
                 const double plane = h.end.face == 1 ? leaf->quadric.zmin : leaf->quadric.zmax;
@@ -437,7 +445,7 @@ TEST_CASE("csg-ray: 10,000 random rays through random trees agree with both refe
             const bool ahead = cg::test::tree_inside(t, root, frames, {out.x, out.y, out.z, 1});
             const bool behind = cg::test::tree_inside(t, root, frames, {in.x, in.y, in.z, 1});
             CHECK_FALSE((ahead && !behind));  // never pointing into the solid
-            normal_out += !ahead && behind;  // (at an edge both sides may be alike)
+            normal_out += !ahead && behind;   // (at an edge both sides may be alike)
         }
 
         // Every 10th ray through the state machine, quiet and narrated, and the plain solve.
@@ -520,24 +528,40 @@ TEST_CASE("csg-ray: bad trees are refused naming the path", "[rays][csg-ray][err
     const std::string s1 = sphere(1), E = R"(, "origin": [0, 0, -5], "direction": [0, 0, 1]})";
     CHECK(error_of(R"({"tree": )" + node("xor", s1, s1) + E) ==
           "tree.op: unknown op \"xor\" (union, intersection, difference)");
-    CHECK(error_of(R"({"tree": )" + node("union", s1, node("union", s1, node("nand", s1, s1))) +
-                   E) == "tree.right.right.op: unknown op \"nand\" (union, intersection, difference)");
+    CHECK(
+        error_of(R"({"tree": )" + node("union", s1, node("union", s1, node("nand", s1, s1))) + E) ==
+        "tree.right.right.op: unknown op \"nand\" (union, intersection, difference)");
     CHECK(error_of(R"({"tree": {"op": "union", "left": )" + s1 + "}" + E) ==
           "tree.right: is missing");
     CHECK(error_of(R"({"tree": {"left": )" + s1 + "}" + E) ==
           "tree: must be a boolean node {\"op\", \"left\", \"right\"} or a leaf {\"primitive\"}");
-    CHECK_THAT(error_of(R"({"tree": {"primitive": {"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]}})" + E),
-               Catch::StartsWith("tree.primitive.max[1]: must be greater than min[1]"));
+    CHECK_THAT(
+        error_of(R"({"tree": {"primitive": {"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]}})" +
+                 E),
+        Catch::StartsWith("tree.primitive.max[1]: must be greater than min[1]"));
     CHECK_THAT(error_of(R"({"tree": {"primitive": {"type": "box", "min": [0, 0, 0]}})" + E),
                Catch::StartsWith("tree.primitive.max: is missing"));
-    CHECK_THAT(error_of(R"({"tree": {"primitive": {"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "params": {}}})" + E),
-               Catch::StartsWith("tree.primitive.params: is not a known field"));
-    CHECK_THAT(error_of(R"({"tree": )" + node("union", s1, R"({"primitive": {"type": "sphere", "params": {"r": -1}}})") + E),
-               Catch::StartsWith("tree.right.primitive.params.r: must be positive"));
-    CHECK_THAT(error_of(R"({"tree": )" + node("union", s1, s1, R"(, "transform": [[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])") + E),
-               Catch::StartsWith("tree.transform: is singular"));
-    CHECK_THAT(error_of(R"({"tree": {"primitive": {"type": "sphere", "params": {"r": 1}}, "name": 3})" + E),
-               Catch::StartsWith("tree.name: must be a string"));
+    CHECK_THAT(
+        error_of(
+            R"({"tree": {"primitive": {"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "params": {}}})" +
+            E),
+        Catch::StartsWith("tree.primitive.params: is not a known field"));
+    CHECK_THAT(
+        error_of(R"({"tree": )" +
+                 node("union", s1, R"({"primitive": {"type": "sphere", "params": {"r": -1}}})") +
+                 E),
+        Catch::StartsWith("tree.right.primitive.params.r: must be positive"));
+    CHECK_THAT(
+        error_of(
+            R"({"tree": )" +
+            node("union", s1, s1,
+                 R"(, "transform": [[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])") +
+            E),
+        Catch::StartsWith("tree.transform: is singular"));
+    CHECK_THAT(
+        error_of(R"({"tree": {"primitive": {"type": "sphere", "params": {"r": 1}}, "name": 3})" +
+                 E),
+        Catch::StartsWith("tree.name: must be a string"));
     // Depth: 32 levels below the root are accepted, 33 refused with the path.
     std::string deep = s1, deeper;
     for (int i = 0; i < 32; ++i) deep = node("union", deep, s1);
@@ -560,12 +584,16 @@ TEST_CASE("csg-ray: bad trees are refused naming the path", "[rays][csg-ray][err
     CHECK_THAT(error_of(R"({"tree": )" + s1 + R"(, "origin": [0, 0, -5]})"),
                Catch::StartsWith("direction: is missing"));
     // A transform that sends the ray out of range in a leaf's frame names the leaf.
-    CHECK_THAT(error_of(R"({"tree": {"primitive": {"type": "sphere", "params": {"r": 1}, "transform": [[1, 0, 0, 5e100], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}})" + E),
-               Catch::StartsWith("tree: is placed so that the ray is too large"));
+    CHECK_THAT(
+        error_of(
+            R"({"tree": {"primitive": {"type": "sphere", "params": {"r": 1}, "transform": [[1, 0, 0, 5e100], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}})" +
+            E),
+        Catch::StartsWith("tree: is placed so that the ray is too large"));
     // NaN from C++ (JSON cannot spell it): the field is named.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     CsgRay::Input in;
-    in.tree = cg::csg_json::tree(cg::parse_json(node("union", s1, box({0, 0, 0}, {1, 1, 1}))), "tree");
+    in.tree =
+        cg::csg_json::tree(cg::parse_json(node("union", s1, box({0, 0, 0}, {1, 1, 1}))), "tree");
     in.origin = {0, 0, -5};
     in.direction = {0, 0, 1};
     auto with = [&](auto change) {
@@ -579,7 +607,8 @@ TEST_CASE("csg-ray: bad trees are refused naming the path", "[rays][csg-ray][err
         return std::string("(accepted)");
     };
     CHECK(with([](auto&) {}) == "(accepted)");
-    CHECK(with([&](auto& i) { i.origin.x = nan; }) == "origin[0]: must be a finite number (got NaN)");
+    CHECK(with([&](auto& i) { i.origin.x = nan; }) ==
+          "origin[0]: must be a finite number (got NaN)");
     CHECK(with([&](auto& i) { i.tree.nodes[1].box.max.z = nan; }) ==
           "tree.right.primitive.max[2]: must be a finite number (got NaN)");
     CHECK(with([&](auto& i) { i.tree.nodes[0].quadric.r = nan; }) ==
@@ -634,8 +663,8 @@ TEST_CASE("csg-ray: exam problems are nice and answered right", "[rays][csg-ray]
     CHECK(three > 60);
     CHECK(moved > 40);
     CHECK(halves > 20);
-    for (const char* ev : {"leaf", "tangent", "union", "intersection", "difference", "hit",
-                           "exit-hit", "miss"}) {
+    for (const char* ev :
+         {"leaf", "tangent", "union", "intersection", "difference", "hit", "exit-hit", "miss"}) {
         CAPTURE(ev);
         CHECK(events.count(ev) == 1);
     }
@@ -666,14 +695,20 @@ TEST_CASE("csg-ray: traces are deterministic and stepping back reproduces them",
     }
 }
 
-TEST_CASE("csg-ray: the picture shows the solids, the ray's segments and the t strip",
+TEST_CASE("csg-ray: the picture shows the solids, the ray's segments and the t chart",
           "[rays][csg-ray]") {
     const cg::Algorithm& a = algorithm();
     auto run = a.create(a.example());
     cg::Scene before;
     run->draw(before);
     CHECK(before.faces3.size() == 2 * 16 * 8);  // both spheres
-    CHECK(before.segments.size() == 2);  // the eye's mark and the t axis, no rows yet
+    CHECK_FALSE(before.has_2d());               // nothing on the world's grid
+    REQUIRE(before.panels.size() == 1);         // the chart: t across, no rows yet
+    CHECK(before.panels[0].kind == cg::PanelKind::Chart);
+    CHECK(before.panels[0].x.label == "t");
+    CHECK(before.panels[0].segments.size() == 1);  // the eye's mark at t = 0
+    CHECK(before.focus3.size() == 1);
+    CHECK(before.view3.orthographic);  // seen from the side of the ray
     std::vector<cg::Scene> scenes;
     while (!run->done()) {
         run->step(nullptr);
@@ -690,17 +725,30 @@ TEST_CASE("csg-ray: the picture shows the solids, the ray's segments and the t s
     }
     CHECK(kept == 1);
     CHECK(thrown == 1);
+    // Three rows on the chart, named; the difference's row is [5, 7], its thrown-away part
+    // [3, 5] thin and red.
+    const cg::Panel& chart = scenes[2].panels.at(0);
     int rows = 0;
-    for (const auto& l : scenes[2].labels) rows += l.text.rfind("A", 0) == 0 || l.text.rfind("B", 0) == 0;
+    for (const auto& l : chart.labels)
+        rows += l.text.rfind("A", 0) == 0 || l.text.rfind("B", 0) == 0;
     CHECK(rows == 3);
+    bool kept_bar = false, red_bar = false;
+    for (const auto& sg : chart.segments) {
+        kept_bar = kept_bar || (sg.style.role == cg::Role::Kept && sg.a.x == 5 && sg.b.x == 7);
+        red_bar = red_bar || (sg.style.role == cg::Role::Discarded && sg.a.x == 3 && sg.b.x == 5);
+    }
+    CHECK(kept_bar);
+    CHECK(red_bar);
     // The hit: the point and its normal.
     bool normal = false, point = false;
-    for (const auto& s : scenes[3].segments3) normal = normal || (s.arrow && s.label == "n");
+    for (const auto& s : scenes[3].segments3)
+        normal = normal || (s.arrow && s.label == "n" && s.min_pixels >= 30);
     for (const auto& p : scenes[3].points3) point = point || p.label == "P";
     CHECK(normal);
     CHECK(point);
     // A box's six faces, a cylinder's mesh between its caps.
-    auto box_run = a.create(cg::parse_json(input(box({0, 0, 0}, {1, 2, 3}), {0.5, 0.5, -4}, {0, 0, 1})));
+    auto box_run =
+        a.create(cg::parse_json(input(box({0, 0, 0}, {1, 2, 3}), {0.5, 0.5, -4}, {0, 0, 1})));
     cg::Scene b;
     box_run->draw(b);
     CHECK(b.faces3.size() == 6);
@@ -712,14 +760,15 @@ TEST_CASE("csg-ray: the worked example of the course's question matches its gold
     std::stringstream golden;
     golden << f.rdbuf();
     REQUIRE_FALSE(golden.str().empty());
-    auto r = cg::test::cgsandbox(
-        {"worked", "csg-ray", "--preset", "the course's question: a sphere minus a smaller one (A − B)"});
+    auto r = cg::test::cgsandbox({"worked", "csg-ray", "--preset",
+                                  "the course's question: a sphere minus a smaller one (A − B)"});
     REQUIRE(r.exit_code == 0);
     CHECK(r.out == golden.str());
 }
 
-TEST_CASE("csg-ray: a direction component of 5e-324 overflows the slab's ends to infinity, said as ∞",
-          "[rays][csg]") {
+TEST_CASE(
+    "csg-ray: a direction component of 5e-324 overflows the slab's ends to infinity, said as ∞",
+    "[rays][csg]") {
     // Found by fuzz_algorithm_input (its oracle: no "inf" in a narration): (3 − 0)/5e-324 is
     // beyond every double, and the slab's interval was printed "[-inf, inf]".
     const cg::json in = cg::json::parse(R"({"tree": {"name": "B", "primitive":
