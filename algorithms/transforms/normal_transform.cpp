@@ -1,4 +1,5 @@
-// Sections: [helpers] [spec] [validate] [advance] [narrate] [draw]
+// Sections: [helpers] [spec] [validate] [advance] [narrate]; the picture is in
+// normal_transform_draw.cpp
 #include "transforms/normal_transform.hpp"
 
 #include <algorithm>
@@ -72,6 +73,10 @@ void check_finite(dvec3 v, const std::string& field) {
 }
 
 }  // namespace
+
+std::array<dvec3, 2> NormalTransform::tangents_of(const Input& in) {
+    return in.has_tangents ? in.tangents : built_tangents(in.normal);
+}
 
 // ---- [spec] ---------------------------------------------------------------------------------
 
@@ -313,39 +318,6 @@ void NormalTransform::step(State& s, StepInfo* info) {
     if (s.phase == Phase::Done) return;
     advance(s);
     if (info) narrate(s, *info);
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// 3D: on the left the surface patch (spanned by the tangents) with its normal; on the right,
-// 3 units along x, its image under L (scaled to fit), the naive L n and the correct N n.
-void NormalTransform::draw(const State& s, Scene& scene) {
-    const bool tangents = s.phase > Phase::Tangents;
-    const std::array<dvec3, 2> t = tangents ? s.r.tangents : built_tangents(s.in->normal);
-    const std::array<dvec3, 2> u = {glm::normalize(t[0]), glm::normalize(t[1])};
-    const std::array<dvec3, 4> corners = {-u[0] - u[1], u[0] - u[1], u[0] + u[1], -u[0] + u[1]};
-    std::vector<dvec3> before;
-    for (const dvec3& c : corners) before.push_back(0.7 * c);
-    scene.faces3.push_back({before, {Role::Subject}, 0.3f, true, true});
-    scene.segments3.push_back({{0, 0, 0}, glm::normalize(s.in->normal), "n", {Role::Neutral, 2.5f}, true});
-    scene.labels3.push_back({{0, -1.3, 0}, "before", {Role::Neutral}});
-    scene.extent3 = 3.5;
-    if (!tangents) return;
-    scene.segments3.push_back({{0, 0, 0}, 0.7 * u[0], "t₁", {Role::Construction, 1.5f}, true});
-    scene.segments3.push_back({{0, 0, 0}, 0.7 * u[1], "t₂", {Role::Construction, 1.5f}, true});
-    const dvec3 o(3, 0, 0);
-    double reach = 0;
-    for (const dvec3& c : corners) reach = std::max(reach, glm::length(s.in->linear * c));
-    const double k = 1.0 / reach;  // the image scaled so that its farthest corner is at 1
-    std::vector<dvec3> after;
-    for (const dvec3& c : corners) after.push_back(o + k * (s.in->linear * c));
-    scene.faces3.push_back({after, {Role::Window}, 0.3f, true, true});
-    scene.labels3.push_back({o + dvec3(0, -1.3, 0), "after L (scaled to fit)", {Role::Window}});
-    if (s.phase > Phase::Naive)
-        scene.segments3.push_back({o, o + glm::normalize(s.r.naive), "L n",
-                                   {s.r.naive_ok ? Role::Kept : Role::Discarded, 2.5f}, true});
-    if (s.phase == Phase::Done)
-        scene.segments3.push_back({o, o + s.r.unit_normal, "N n", {Role::Kept, 3.0f}, true});
 }
 
 }  // namespace cg

@@ -80,6 +80,8 @@ struct NormalTransform {
     static std::vector<std::string> answer_fields();
 
     static Result transform(const Input& in);  // the straight-line version
+    // The tangents t₁, t₂ the run uses: the input's, or two built perpendicular to n.
+    static std::array<glm::dvec3, 2> tangents_of(const Input& in);
 
 private:
     static void advance(State& s);
