@@ -13,7 +13,7 @@ namespace cg::texdraw {
 using glm::dvec2;
 using glm::dvec3;
 
-int add_image(const TextureImage& im, Scene& scene, const std::string& label) {
+Panel& add_image(const TextureImage& im, Scene& scene, const std::string& label, int& shown) {
     constexpr int kMaxShown = 128;  // cells on a side: a big image is shown every k-th texel
     const int k = std::max(1, (std::max(im.width, im.height) + kMaxShown - 1) / kMaxShown);
     PixelGrid2 g;
@@ -24,20 +24,18 @@ int add_image(const TextureImage& im, Scene& scene, const std::string& label) {
     for (int j = 0; j < g.height; ++j)
         for (int i = 0; i < g.width; ++i)
             g.rgba[static_cast<std::size_t>(j) * g.width + i] = pack_rgba(im.at(i * k, j * k));
-    scene.grids.push_back(std::move(g));
     std::string text = std::to_string(im.width) + " × " + std::to_string(im.height) + " texels";
     if (!label.empty()) text = label + ": " + text;
     if (k > 1) text += " (every " + std::to_string(k) + "th shown)";
-    scene.labels.push_back({{0, (im.height + k - 1) / k + 0.6}, text, {Role::Neutral}});
-    scene.labels.push_back({{-0.6, -0.6}, "(0, 0)", {Role::Construction}});
-    return k;
+    shown = k;
+    return cg::add_image(scene, text, std::move(g));
 }
 
-void outline_texel(glm::ivec2 t, int shown, const std::string& label, Role role, Scene& scene) {
+void outline_texel(glm::ivec2 t, int shown, const std::string& label, Role role, Panel& panel) {
     const double x0 = std::floor(double(t.x) / shown), y0 = std::floor(double(t.y) / shown);
-    scene.polygons.push_back(
+    panel.polygons.push_back(
         {{{x0, y0}, {x0 + 1, y0}, {x0 + 1, y0 + 1}, {x0, y0 + 1}}, {role, 2.5f}, true, false});
-    scene.labels.push_back({{x0 + 0.5, y0 + 0.5}, label, {role}});
+    if (!label.empty()) panel.labels.push_back({{x0 + 0.5, y0 + 0.5}, label, {role}, 2});
 }
 
 double surface_size(const PreparedUv& p, const UvSurface& s) {
@@ -133,16 +131,17 @@ void add_textured_surface(const PreparedUv& p, const UvSurface& s, dvec2 uv, con
         dvec3(0.0), 1.0f, scene);
 }
 
-void add_point_frame(const PreparedUv& p, dvec3 P, const UvFrame* f, dvec3 color, Scene& scene) {
-    const std::string label = color.x >= 0 ? "P, colour " + num(color, 3) : "P";
-    scene.points3.push_back({P, label, {Role::Active}, 6.0f});
+void add_point_frame(const PreparedUv& p, dvec3 P, const UvFrame* f, Scene& scene) {
+    scene.points3.push_back({P, "P", {Role::Active}, 6.0f});
     if (!f) return;
-    // The directions of growing u and v, scaled to a visible length.
+    // The directions of growing u and v, scaled to a visible length (and at least 30 px).
     const double L = 0.3 * std::max({glm::length(f->P_u) / 6.3, glm::length(f->P_v) / 3.2, 0.2});
     if (glm::length(f->P_u) > 0)
-        scene.segments3.push_back({P, P + L * unit(f->P_u), "u", {Role::Entering, 2.0f}, true});
+        scene.segments3.push_back(
+            {P, P + L * unit(f->P_u), "u", {Role::Entering, 2.0f}, true, 30.0f});
     if (glm::length(f->P_v) > 0)
-        scene.segments3.push_back({P, P + L * unit(f->P_v), "v", {Role::Leaving, 2.0f}, true});
+        scene.segments3.push_back(
+            {P, P + L * unit(f->P_v), "v", {Role::Leaving, 2.0f}, true, 30.0f});
     (void)p;
 }
 

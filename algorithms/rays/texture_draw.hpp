@@ -13,10 +13,11 @@
 
 namespace cg::texdraw {
 
-// The image as a grid of cells, one per texel (a large image every k-th texel, k returned:
-// texel (i, j) is then at cell (i/k, j/k)).
-int add_image(const TextureImage& im, Scene& scene, const std::string& label);
-void outline_texel(glm::ivec2 texel, int shown, const std::string& label, Role role, Scene& scene);
+// The image as an image panel titled "<label>: W × H texels", one cell per texel (a large image
+// every k-th texel, k returned: texel (i, j) is then at cell (i/k, j/k)).
+Panel& add_image(const TextureImage& im, Scene& scene, const std::string& label, int& shown);
+// A texel outlined in its panel, its label (a weight) inside it.
+void outline_texel(glm::ivec2 texel, int shown, const std::string& label, Role role, Panel& panel);
 
 // The (u, v) range drawn around a point: the whole surface for spheres and cut quadrics, one
 // texture repeat each way for planes and uncut quadrics.
@@ -31,9 +32,8 @@ void add_surface(const PreparedUv& p, const UvSurface& s, glm::dvec2 lo, glm::dv
 // The surface painted with the texture (nearest lookups of level 0).
 void add_textured_surface(const PreparedUv& p, const UvSurface& s, glm::dvec2 uv, const Texture& t,
                           const void* unused, Scene& scene);
-// The point, and (with a frame) the u and v directions there; `color` ≥ 0 labels the colour.
-void add_point_frame(const PreparedUv& p, glm::dvec3 P, const UvFrame* frame, glm::dvec3 color,
-                     Scene& scene);
+// The point, and (with a frame) the u and v directions there, at least 30 px long.
+void add_point_frame(const PreparedUv& p, glm::dvec3 P, const UvFrame* frame, Scene& scene);
 // A size for arrows and offsets around the surface.
 double surface_size(const PreparedUv& p, const UvSurface& s);
 

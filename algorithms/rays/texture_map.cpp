@@ -1,4 +1,4 @@
-// Sections: [spec] [validate] [advance] [narrate] [draw]
+// Sections: [spec] [validate] [advance] [narrate]; the picture is in texture_map_draw.cpp.
 #include "rays/texture_map.hpp"
 
 #include <algorithm>
@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
-#include "rays/texture_draw.hpp"
 
 namespace cg {
 
@@ -62,21 +61,24 @@ const Spec& TextureMap::spec() {
         },
         {},  // no sliders
         {
-            .predict = {
-                {"sphere-uv", {"uv"}},
-                {"plane-uv", {"uv"}},
-                {"wrap", {"st"}},
-                {"nearest", {"texel"}},
-                {"bilinear", {"texel", "color"}},
-            },
-            .mistakes = {
-                {"sphere-uv", "uv", "reverse", "swapped u and v"},
-                {"bilinear", "weights", "reverse", "paired the weights with the wrong texels"},
-            },
-            .variants = {
-                {"nearest", "/texture/filter", "\"nearest\""},
-                {"bilinear", "/texture/filter", "\"bilinear\""},
-            },
+            .predict =
+                {
+                    {"sphere-uv", {"uv"}},
+                    {"plane-uv", {"uv"}},
+                    {"wrap", {"st"}},
+                    {"nearest", {"texel"}},
+                    {"bilinear", {"texel", "color"}},
+                },
+            .mistakes =
+                {
+                    {"sphere-uv", "uv", "reverse", "swapped u and v"},
+                    {"bilinear", "weights", "reverse", "paired the weights with the wrong texels"},
+                },
+            .variants =
+                {
+                    {"nearest", "/texture/filter", "\"nearest\""},
+                    {"bilinear", "/texture/filter", "\"bilinear\""},
+                },
         },
     };
     return spec;
@@ -394,37 +396,6 @@ void TextureMap::narrate(const State& s, StepInfo& info) {
                                                             l.taps.weight.begin() + l.taps.count)});
     }
     if (s.phase == Phase::Done) info.vars.push_back({"color", vec(l.color)});
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// 2D: the texture (the level being read), the point (s, t) on it, the texels read with their
-// weights. 3D: the surface painted with the texture, the point, and its u and v directions.
-void TextureMap::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const Texture& t = in.texture;
-    const TextureLookup& l = s.r.lookup;
-    int k = 0;  // the level the last step read or built
-    if (s.last == Phase::MipLevel) k = static_cast<int>(s.levels.size());
-    if (t.filter == TexFilter::Mipmap && s.last >= Phase::Sample)
-        k = s.last == Phase::SampleCoarse ? l.level1 : l.level0;
-    const TextureImage& im = level(s, k);
-    const double shown = texdraw::add_image(im, scene, k == 0 ? "" : "level " + std::to_string(k));
-    if (s.last >= Phase::Wrap) {
-        const dvec2 at = dvec2(l.st.x * im.width, l.st.y * im.height) / shown;
-        scene.points.push_back({at, "(s, t) = " + num(l.st, 3), {Role::Active}, 6.0f});
-    }
-    if (s.last >= Phase::Sample) {
-        const TexelTaps& tp = (s.last == Phase::SampleCoarse) ? l.coarse : l.taps;
-        for (int q = 0; q < tp.count; ++q)
-            texdraw::outline_texel(tp.texel[q], shown,
-                                   tp.count > 1 ? "w = " + num(tp.weight[q], 3) : "nearest",
-                                   q == 0 ? Role::Kept : Role::Entering, scene);
-    }
-    const dvec3 color = s.phase == Phase::Done ? l.color : dvec3(-1);
-    texdraw::add_textured_surface(s.prepared, in.surface, s.r.frame.uv, t, nullptr, scene);
-    texdraw::add_point_frame(s.prepared, in.point, s.last >= Phase::Map ? &s.r.frame : nullptr,
-                             color, scene);
 }
 
 }  // namespace cg

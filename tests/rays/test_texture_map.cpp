@@ -423,8 +423,9 @@ TEST_CASE("texture-map: the state machine gives the plain function's answer, bit
     }
 }
 
-TEST_CASE("texture-map: image files are read with their first row at v = 1, and bad files are named",
-          "[rays][texture-map][errors]") {
+TEST_CASE(
+    "texture-map: image files are read with their first row at v = 1, and bad files are named",
+    "[rays][texture-map][errors]") {
     // A 2 × 2 PNG: top row red, green; bottom row blue, white.
     const std::string png = cg::test::output_path("tex-2x2.png");
     const unsigned char px[] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
@@ -610,18 +611,51 @@ TEST_CASE("texture-map: the picture shows the texture, the texels read and the t
     while (!TextureMap::done(s)) TextureMap::step(s, nullptr);
     cg::Scene scene;
     TextureMap::draw(s, scene);
-    REQUIRE(scene.grids.size() == 1);
-    CHECK(scene.grids[0].width == 4);
-    CHECK(scene.grids[0].height == 2);
-    CHECK(scene.grids[0].rgba[0] == 0x0000ffffu);  // texel (0, 0): the bottom row's blue
-    CHECK(scene.polygons.size() == 4);             // the four texels read
+    CHECK_FALSE(scene.has_2d());  // nothing on the world's grid
+    // The texture in an image panel of its own, the four texels read outlined in its cells with
+    // their weights, (s, t) on it.
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& tex = scene.panels[0];
+    CHECK(tex.kind == cg::PanelKind::Image);
+    REQUIRE(tex.grids.size() == 1);
+    CHECK(tex.grids[0].width == 4);
+    CHECK(tex.grids[0].height == 2);
+    CHECK(tex.grids[0].rgba[0] == 0x0000ffffu);  // texel (0, 0): the bottom row's blue
+    CHECK(tex.polygons.size() == 4);             // the four texels read
+    CHECK(tex.labels.size() == 4);               // their weights
+    REQUIRE(tex.points.size() == 1);             // (s, t)
+    CHECK(tex.points[0].style.role == cg::Role::Active);
     CHECK(scene.faces3.size() == 24 * 12);
+    CHECK(scene.focus3.size() == 1);
     bool u_arrow = false;
-    for (const auto& seg : scene.segments3) u_arrow = u_arrow || seg.label == "u";
+    for (const auto& seg : scene.segments3)
+        u_arrow = u_arrow || (seg.label == "u" && seg.min_pixels >= 30);
     CHECK(u_arrow);
     // A big image is shown every k-th texel.
     cg::Scene big;
     cg::TextureImage im = cg::checker_image(1024, 512, dvec3(0), dvec3(1));
-    CHECK(cg::texdraw::add_image(im, big, "") == 8);
-    CHECK(big.grids[0].width == 128);
+    int shown = 0;
+    const cg::Panel& p = cg::texdraw::add_image(im, big, "", shown);
+    CHECK(shown == 8);
+    CHECK(p.grids[0].width == 128);
+}
+
+TEST_CASE("texture-map: mip-mapping shows level 0 with the footprint and the level read",
+          "[rays][texture-map]") {
+    auto s = TextureMap::start(input_of(cg::parse_json(
+        R"({"surface": {"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "point": [0.3, 0.6, 0],
+            "texture": {"checker": {"size": 16}, "filter": "mipmap"}, "footprint": 0.2})")));
+    while (!TextureMap::done(s)) TextureMap::step(s, nullptr);
+    cg::Scene scene;
+    TextureMap::draw(s, scene);
+    REQUIRE(scene.panels.size() == 2);
+    CHECK(scene.panels[0].grids[0].width == 16);
+    CHECK(scene.panels[1].grids[0].width < 16);  // a coarser level
+    // The footprint (0.2 of 16 texels) round (s, t) on level 0, dashed.
+    bool footprint = false;
+    for (const auto& poly : scene.panels[0].polygons)
+        footprint = footprint ||
+                    (poly.style.dashed && poly.points[1].x - poly.points[0].x == Approx(0.2 * 16));
+    CHECK(footprint);
+    CHECK_FALSE(scene.panels[1].polygons.empty());  // the taps read there
 }
