@@ -1,4 +1,4 @@
-// Sections: [spec] [validate] [advance] [narrate] [draw]
+// Sections: [spec] [validate] [advance] [narrate]; the picture is in bump_map_draw.cpp.
 #include "rays/bump_map.hpp"
 
 #include <algorithm>
@@ -6,11 +6,9 @@
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
-#include "rays/texture_draw.hpp"
 
 namespace cg {
 
-using glm::dvec2;
 using glm::dvec3;
 using Phase = BumpMap::Phase;
 
@@ -48,16 +46,18 @@ const Spec& BumpMap::spec() {
         },
         {},  // no sliders
         {
-            .predict = {
-                {"height", {"B"}},
-                {"differences", {"B_u", "B_v"}},
-                {"normal", {"D"}},
-                {"perturbed", {"n'"}},
-            },
-            .mistakes = {
-                {"normal", "D", "negate", "added the height gradient where it is subtracted"},
-                {"partials", "P_u", "swap:P_v", "mixed up P_u and P_v"},
-            },
+            .predict =
+                {
+                    {"height", {"B"}},
+                    {"differences", {"B_u", "B_v"}},
+                    {"normal", {"D"}},
+                    {"perturbed", {"n'"}},
+                },
+            .mistakes =
+                {
+                    {"normal", "D", "negate", "added the height gradient where it is subtracted"},
+                    {"partials", "P_u", "swap:P_v", "mixed up P_u and P_v"},
+                },
         },
     };
     return spec;
@@ -69,9 +69,9 @@ void BumpMap::validate(const Input& in) {
     validate_uv_surface(in.surface, "surface");
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(in.point[i]) || std::fabs(in.point[i]) > 1e12)
-            throw InputError(
-                "point[" + std::to_string(i) + "]",
-                "must be a finite number of magnitude at most 1e12 (got " + given(in.point[i]) + ")");
+            throw InputError("point[" + std::to_string(i) + "]",
+                             "must be a finite number of magnitude at most 1e12 (got " +
+                                 given(in.point[i]) + ")");
     validate_height(in.height, "height");
     if (in.has_light) {
         for (int i = 0; i < 3; ++i)
@@ -238,92 +238,6 @@ void BumpMap::narrate(const State& s, StepInfo& info) {
         info.vars.push_back({"D", vec(b.D)});
     }
     if (s.phase == Phase::Done) info.vars.push_back({"n'", vec(b.perturbed)});
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// 3D: two patches of the surface around P, lit by one light with Lambert's law — the left one
-// with the perturbed normals (bumps), the right one with the surface's own (smooth) — and n, n'
-// at P. 2D: B along the u line through P, with the central difference's chord.
-void BumpMap::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const HeightField& h = in.height;
-    const PreparedUv& p = s.prepared;
-    const UvFrame& f = s.r.frame;
-    const bool framed = s.phase != Phase::Frame;  // the first step has been taken
-    const UvFrame frame = framed ? f : uv_frame(p, in.point);
-    // One or two bump periods each way.
-    double freq = std::max(std::fabs(h.frequency.x), std::fabs(h.frequency.y));
-    if (h.kind == HeightKind::Image)
-        freq = std::max(h.image.image.width, h.image.image.height) / 4.0;
-    const double half = std::min(0.5, 1.0 / std::max(freq, 1.0));
-    const dvec2 lo = frame.uv - dvec2(half), hi = frame.uv + dvec2(half);
-    dvec3 light = in.has_light ? unit(in.light)
-                               : unit(s.outward + 0.8 * unit(frame.P_u) + 0.4 * unit(frame.P_v));
-    if (light == dvec3(0.0)) light = s.outward;
-    auto shade = [&](dvec3 n) { return dvec3(0.15 + 0.85 * std::max(0.0, glm::dot(n, light))); };
-    const double size = texdraw::surface_size(p, in.surface);
-    const dvec3 side = unit(frame.P_u) == dvec3(0.0) ? dvec3(1, 0, 0) : unit(frame.P_u);
-    const dvec3 offset = (glm::length(uv_point(p, hi) - uv_point(p, lo)) + 0.2 * size) * side;
-    constexpr int kCells = 12;
-    texdraw::add_surface(
-        p, in.surface, lo, hi, kCells, kCells,
-        [&](dvec2 uv, dvec3 P) {
-            const UvFrame q = uv_frame(p, P);
-            UvFrame at = q;
-            at.uv = uv;  // the cell's own (u, v), not the one the point maps back to
-            return shade(blinn_bump(at, outward_normal(p, P), h, s.perlin).perturbed);
-        },
-        dvec3(0.0), 0.95f, scene);
-    texdraw::add_surface(
-        p, in.surface, lo, hi, kCells, kCells,
-        [&](dvec2, dvec3 P) { return shade(outward_normal(p, P)); }, offset, 0.95f, scene);
-    const dvec3 P = in.point;
-    const double L = 0.35 * std::max(glm::length(uv_point(p, hi) - uv_point(p, lo)), 1e-6);
-    scene.points3.push_back({P, "P", {Role::Active}, 6.0f});
-    scene.segments3.push_back({P, P + L * s.outward, "n", {Role::Neutral, 2.0f}, true});
-    scene.segments3.push_back(
-        {P + offset, P + offset + L * s.outward, "n (smooth)", {Role::Neutral, 2.0f}, true});
-    if (s.phase == Phase::Done && !s.r.bump.singular)
-        scene.segments3.push_back(
-            {P, P + L * s.r.bump.perturbed, "n'", {Role::Active, 2.5f}, true});
-    scene.segments3.push_back({P + 1.5 * L * light,
-                               P + 0.6 * L * light,
-                               "light",
-                               {Role::Construction, 1.5f, true},
-                               true});
-    scene.extent3 = 0.8 * glm::length(offset) + L;
-
-    // 2D: B(u, v₀) across the patch, scaled to the plot's width.
-    constexpr int kSamples = 120;
-    std::vector<dvec2> curve;
-    double b_max = 1e-300;
-    for (int i = 0; i <= kSamples; ++i)
-        b_max = std::max(
-            b_max,
-            std::fabs(height_at(h, s.perlin, {lo.x + (hi.x - lo.x) * i / kSamples, frame.uv.y})));
-    const double scale = 0.35 * (hi.x - lo.x) / b_max;
-    for (int i = 0; i <= kSamples; ++i) {
-        const double u = lo.x + (hi.x - lo.x) * i / kSamples;
-        curve.push_back({u, scale * height_at(h, s.perlin, {u, frame.uv.y})});
-    }
-    scene.polygons.push_back({curve, {Role::Subject, 2.0f}, false, false});
-    scene.segments.push_back({{lo.x, 0}, {hi.x, 0}, "u", {Role::Neutral, 1.0f}, true});
-    scene.labels.push_back({{lo.x, 0.45 * (hi.x - lo.x)},
-                            "B(u, v = " + num(frame.uv.y, 4) + ")  (drawn ×" + num(scale, 3) + ")",
-                            {Role::Neutral}});
-    if (s.last >= Phase::Height) {
-        const BumpResult& b = s.r.bump;
-        scene.points.push_back({{frame.uv.x, scale * b.B}, "B", {Role::Active}, 6.0f});
-        if (s.last >= Phase::Differences) {  // the slope B_u through the point
-            const double du = 0.25 * (hi.x - lo.x);
-            scene.segments.push_back({{frame.uv.x - du, scale * (b.B - du * b.B_u)},
-                                      {frame.uv.x + du, scale * (b.B + du * b.B_u)},
-                                      "slope B_u = " + num(b.B_u, 4),
-                                      {Role::Kept, 2.0f},
-                                      false});
-        }
-    }
 }
 
 }  // namespace cg

@@ -358,11 +358,29 @@ TEST_CASE("bump-map: the picture shows both normals and the lit patches", "[rays
     for (const auto& seg : scene.segments3) labels.insert(seg.label);
     CHECK(labels.count("n") == 1);
     CHECK(labels.count("n'") == 1);
+    for (const auto& seg : scene.segments3)
+        if (seg.label == "n'") {
+            CHECK(seg.min_pixels >= 30);  // the perturbed normal can be seen
+            CHECK(seg.style.role == cg::Role::Active);
+        }
+    CHECK(scene.focus3.size() == 1);
     // The bumped patch's faces are not all lit alike; the smooth patch's are.
     std::set<std::uint32_t> bumped, smooth;
     for (std::size_t k = 0; k < scene.faces3.size(); ++k)
         (k < 12 * 12 ? bumped : smooth).insert(scene.faces3[k].style.rgba);
     CHECK(bumped.size() > 8);
     CHECK(smooth.size() == 1);
-    CHECK(scene.polygons.size() == 1);  // B along u
+    // B along u and along v through P, each a chart in its own units with B at P and the
+    // slope of the central difference through it.
+    CHECK_FALSE(scene.has_2d());
+    REQUIRE(scene.panels.size() == 2);
+    for (const auto& chart : scene.panels) {
+        CHECK(chart.kind == cg::PanelKind::Chart);
+        CHECK(chart.y.label == "B");
+        CHECK(chart.polygons.size() == 1);
+        REQUIRE(chart.segments.size() == 1);
+        CHECK(chart.segments[0].label.rfind("B_", 0) == 0);
+    }
+    CHECK(scene.panels[0].x.label == "u");
+    CHECK(scene.panels[1].x.label == "v");
 }
