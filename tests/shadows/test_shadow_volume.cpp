@@ -548,8 +548,25 @@ TEST_CASE("shadow-volume: the picture — occluder, silhouette, quads, the ray's
     ShadowVolume::draw(s, pic);
     CHECK(pic.has_3d());
     CHECK(pic.faces3.size() == 13);  // the floor and 12 faces
-    // Run to the first crossing of ray 0.
+    CHECK(pic.focus3.size() == 1);   // framed on the occluder and the light
+    // Each edge step names its verdict on the edge itself: silhouette (orange) or inner (red).
     cg::StepInfo info;
+    int silhouette = 0, inner = 0;
+    while (!ShadowVolume::done(s)) {
+        ShadowVolume::step(s, &info);
+        if (s.last != ShadowVolume::Phase::Edge || s.edge < 0) continue;
+        cg::Scene edge;
+        ShadowVolume::draw(s, edge);
+        for (const auto& g : edge.segments3) {
+            silhouette += g.label.rfind("silhouette", 0) == 0 && g.style.role == cg::Role::Active;
+            inner += g.label.rfind("inner", 0) == 0 && g.style.role == cg::Role::Discarded;
+        }
+        if (s.phase != ShadowVolume::Phase::Edge) break;
+    }
+    CHECK(silhouette == 4);
+    CHECK(inner > 0);
+    // Run to the first crossing of ray 0.
+    s = ShadowVolume::start(kBox);
     while (!ShadowVolume::done(s)) {
         ShadowVolume::step(s, &info);
         if (info.event == "enter") break;
