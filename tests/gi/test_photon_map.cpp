@@ -513,4 +513,10 @@ TEST_CASE("photon-map: the picture — photons by power, the path, the splitting
     std::size_t kept = 0;
     for (const auto& p : last.points3) kept += p.style.role == cg::Role::Kept;
     CHECK(kept == std::size_t(in.k));
+    // The camera frames the query's neighbourhood with the light: both inside the focus.
+    REQUIRE(last.focus3.size() == 1);
+    const auto& f = last.focus3[0];
+    for (const glm::dvec3& p : {in.query, in.lights[0].position})
+        CHECK((p.x >= f.lo.x && p.y >= f.lo.y && p.z >= f.lo.z && p.x <= f.hi.x &&
+               p.y <= f.hi.y && p.z <= f.hi.z));
 }
