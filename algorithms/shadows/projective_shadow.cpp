@@ -597,11 +597,13 @@ void ProjectiveShadow::draw(const State& s, Scene& scene) {
                             0.18f});
     const dvec3 centre = origin + 0.5 * (u0 + u1) * u + 0.5 * (v0 + v1) * v;
     scene.labels3.push_back({origin + u0 * u + v0 * v, "plane", {Role::Window}});
-    scene.segments3.push_back({centre,
-                               centre + un * 0.25 * std::max(u1 - u0, v1 - v0) * 0.4,
-                               "n",
-                               {Role::Window, 1.5f},
-                               true});
+    Segment3 normal{centre,
+                    centre + un * 0.25 * std::max(u1 - u0, v1 - v0) * 0.4,
+                    "n",
+                    {Role::Window, 1.5f},
+                    true};
+    normal.min_pixels = 30;  // a normal that must be seen whatever the zoom
+    scene.segments3.push_back(normal);
 
     // The polygon.
     dvec3 middle(0);
@@ -682,6 +684,20 @@ void ProjectiveShadow::draw(const State& s, Scene& scene) {
                                            {Role::Neutral, 2.0f, false, 0x202020ffu},
                                            false});
         }
+    }
+    // The camera frames the construction: the polygon, the light (or the sun's arrow) and the
+    // shadow points that fall on the plane.
+    {
+        dvec3 lo = middle, hi = middle;
+        auto take = [&](const dvec3& p) {
+            if (finite3(p)) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        };
+        for (const dvec3& p : in.polygon) take(p);
+        if (sun) take(middle + ldir * 0.6 * size);
+        else if (glm::length(L - centre) <= 4 * size) take(L);
+        for (std::size_t k = 0; k < s.shadow.size(); ++k)
+            if (s.cases[k] == Case::Shadow || s.cases[k] == Case::OnPlane) take(s.shadow[k]);
+        if (finite3(lo) && finite3(hi)) add_focus(scene, lo, hi);
     }
     // Inputs near the limits of a double (coordinates of 1e300) leave nothing worth drawing
     // where the picture's own arithmetic overflows: such primitives are left out.
