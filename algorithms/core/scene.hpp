@@ -202,6 +202,8 @@ struct Axis {
     double lo = 0, hi = 0;      // lo < hi: this range; otherwise fitted to the data, padded
     bool log = false;           // logarithmic (values must be above 0; others are left out)
     bool include_zero = false;  // a fitted range reaches 0 (an energy, a count: not a wobble)
+    double step = 0;            // ticks at multiples of this (1: whole numbers); 0: by the room
+    bool reversed = false;      // y only: growing downward (a screen's rows)
 };
 
 // A line of a chart's legend: the series' style beside its name.
@@ -224,6 +226,7 @@ struct Panel : Layer2 {
     Axis x, y;          // a chart's axes
     std::vector<LegendEntry> legend;
     double weight = 1;  // its share of the canvas against the other views (the main view: 1.5)
+    bool equal_aspect = false;  // a chart whose x and y units are equally long: a square stays one
 };
 
 // The bounds of something the step is about, for framing and for the layout's check that it
@@ -255,6 +258,9 @@ struct Scene : Layer2 {
     std::vector<Frame3> frames3;
     double extent3 = 0;
     ViewHint3 view3;
+    // The world's grid, axes and tick numbers; false for a diagram (a tree, a flow) whose
+    // coordinates mean nothing to the student.
+    bool world_grid = true;
 
     std::vector<Panel> panels;  // charts and images, beside the world and the 3D view
     std::vector<Focus2> focus2;
@@ -269,7 +275,8 @@ struct Scene : Layer2 {
 
 // ---- Building panels and focus ----
 
-// A new chart panel, returned for filling: its series go in as lines, dots or bars.
+// A new chart panel, returned for filling: its series go in as lines, dots or bars. The
+// reference is into scene.panels: fill the panel before adding the next one, which may move it.
 inline Panel& add_chart(Scene& scene, std::string title, Axis x, Axis y) {
     Panel p;
     p.kind = PanelKind::Chart;

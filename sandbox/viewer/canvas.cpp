@@ -18,6 +18,7 @@
 #include "viewer/im_colour.hpp"
 #include "viewer/layout.hpp"
 #include "viewer/palette.hpp"
+#include "viewer/text_wrap.hpp"
 
 namespace cg::viewer {
 
@@ -196,12 +197,15 @@ double draw_title(ImDrawList* dl, const Box& canvas, const Title& t, const Fonts
     if (t.title.empty()) return 0;
     const double width = canvas.max.x - canvas.min.x, pad = 8;
     const float wrap = static_cast<float>(std::max(width - 2 * pad, 10.0));
-    auto size = [](ImFont* font, const std::string& s, float w) {
-        return glm::dvec2(dv(font->CalcTextSizeA(font->FontSize, FLT_MAX, w, s.c_str())));
+    // Wrapped at spaces only (ImGui's wrapping also breaks after a number's point).
+    const std::string title_text = wrap_at_spaces(f.ui, f.ui->FontSize, t.title, wrap);
+    const std::string detail_text = wrap_at_spaces(f.small, f.small->FontSize, t.detail, wrap);
+    auto size = [](ImFont* font, const std::string& s) {
+        return glm::dvec2(dv(font->CalcTextSizeA(font->FontSize, FLT_MAX, 0, s.c_str())));
     };
-    const glm::dvec2 title = size(f.ui, t.title, wrap);
-    const glm::dvec2 detail = size(f.small, t.detail, wrap);
-    const glm::dvec2 hint = size(f.small, t.hint, 0);
+    const glm::dvec2 title = size(f.ui, title_text);
+    const glm::dvec2 detail = size(f.small, detail_text);
+    const glm::dvec2 hint = size(f.small, t.hint);
     // One line when the title and the detail fit side by side, else the detail under it.
     const bool one_line = title.y <= f.ui->FontSize * 1.5 && title.x + 24 + detail.x <= wrap;
     const double height = one_line ? title.y + 2 * pad - 2 : title.y + detail.y + 2 * pad;
@@ -210,14 +214,13 @@ double draw_title(ImDrawList* dl, const Box& canvas, const Title& t, const Fonts
     dl->AddLine(im({strip.min.x, strip.max.y - 0.5}), im({strip.max.x, strip.max.y - 0.5}),
                 im_colour(kTitleRule));
     const glm::dvec2 at = canvas.min + glm::dvec2(pad, pad - 1);
-    dl->AddText(f.ui, f.ui->FontSize, im(at), im_colour(kCaptionText), t.title.c_str(), nullptr,
-                wrap);
+    dl->AddText(f.ui, f.ui->FontSize, im(at), im_colour(kCaptionText), title_text.c_str());
     const glm::dvec2 detail_at =
         one_line
             ? glm::dvec2(at.x + title.x + 24, at.y + (f.ui->FontSize - f.small->FontSize) / 2 + 1)
             : glm::dvec2(at.x, at.y + title.y + 1);
-    dl->AddText(f.small, f.small->FontSize, im(detail_at), im_colour(kTickLabel), t.detail.c_str(),
-                nullptr, wrap);
+    dl->AddText(f.small, f.small->FontSize, im(detail_at), im_colour(kTickLabel),
+                detail_text.c_str());
     // The hint, right-aligned on the last line, when it does not touch the text before it.
     const double hint_x = canvas.max.x - pad - hint.x;
     if (!t.hint.empty() && hint_x > detail_at.x + detail.x + 24)
@@ -267,7 +270,7 @@ ScreenMap draw_world(Session& s, const Box& box, bool interactive, Recording rec
     dl->PushClipRect(im(box.min), im(box.max), true);
     // No background of its own: the frame is cleared to the canvas's colour (kCanvasBackground)
     // before ImGui draws, and a software rasteriser pays for every pixel filled twice.
-    draw_grid(dl, map, s.fonts);
+    if (scene->world_grid) draw_grid(dl, map, s.fonts);
     const Box drawn = draw_scene(dl, map, *scene, s.fonts, hot, keep_clear, s.textures, rec);
     if (rec.record) rec.record->panels[rec.panel].content = drawn;
     dl->PopClipRect();
@@ -365,7 +368,9 @@ void draw_canvas(Session& s, bool interactive) {
     area.min.y +=
         draw_title(dl, canvas, make_title(s, interactive, scene.has_3d(), shows_world(scene)),
                    s.fonts, record);
-    const std::vector<ViewSlot> views = layout_views(scene, area);
+    const std::vector<ViewSlot> views = layout_views(scene, area, 6, [&](const Panel& p, double w) {
+        return panel_header_height(p, w, s.fonts);
+    });
     if (record)
         for (const ViewSlot& v : views) record->panels.push_back({v.kind, v.box, v.box});
 

@@ -54,17 +54,55 @@ double height(const Box& b) {
     return b.max.y - b.min.y;
 }
 
+// Room an image panel keeps for its title (when its header's height is not measured) and its
+// margins, pixels (as draw_panel and draw_image leave them).
+constexpr double kImageTitle = 30, kImageMarginX = 16, kImageMarginY = 12;
+
+// The raster's width over its height (1 for a panel without one).
+double image_aspect(const Panel& p) {
+    if (p.grids.empty() || p.grids.front().width <= 0 || p.grids.front().height <= 0) return 1;
+    return double(p.grids.front().width) / p.grids.front().height;
+}
+
+// An image panel's box shrunk to its raster's shape (title above, margins round), centred
+// across and at the top: the panel is the picture, not the picture and a strip of nothing.
+Box tight_image_box(const Box& box, const Panel& p, double header) {
+    const double cells_w = p.grids.empty() ? 1 : std::max(p.grids.front().width, 1);
+    const double cells_h = p.grids.empty() ? 1 : std::max(p.grids.front().height, 1);
+    const double room_w = std::max(width(box) - kImageMarginX, 1.0);
+    const double room_h = std::max(height(box) - header - kImageMarginY, 1.0);
+    const double zoom = image_zoom(room_w / cells_w, room_h / cells_h);
+    const double bw = std::ceil(cells_w * zoom + kImageMarginX);
+    const double bh = std::ceil(cells_h * zoom + header + kImageMarginY);
+    const double x0 = std::round(box.min.x + (width(box) - bw) / 2);
+    return {{x0, box.min.y}, {x0 + bw, box.min.y + bh}};
+}
+
 }  // namespace
 
 bool shows_world(const Scene& scene) {
     return scene.has_2d() || !scene.handles.empty() || (!scene.has_3d() && scene.panels.empty());
 }
 
-std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double gap) {
+std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double gap,
+                                   const HeaderHeight& header_of) {
+    auto header = [&](const Panel& p, double w) {
+        return header_of ? header_of(p, w) : kImageTitle;
+    };
+    auto tighten = [&](std::vector<ViewSlot>& views) {
+        for (ViewSlot& v : views)
+            if (v.kind == ViewKind::Image) {
+                const Panel& p = scene.panels[v.panel];
+                // Narrower, the title and legend may take more rows: measured again there.
+                const Box room = v.box;
+                v.box = tight_image_box(room, p, header(p, width(room)));
+                const double h = header(p, width(v.box));
+                if (h != header(p, width(room))) v.box = tight_image_box(room, p, h);
+            }
+    };
     std::vector<ViewSlot> mains, panels;
     const bool three = scene.has_3d();
-    // The world is shown when it has something, or when nothing else would be.
-    const bool world = scene.has_2d() || !scene.handles.empty() || (!three && scene.panels.empty());
+    const bool world = shows_world(scene);
     if (three) mains.push_back({ViewKind::View3d, -1, area});
     if (world) mains.push_back({ViewKind::World2d, -1, area});
     for (std::size_t i = 0; i < scene.panels.size(); ++i)
@@ -106,6 +144,7 @@ std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double g
                 for (std::size_t c = 0; c < count; ++c) views[first + c].box = cells[c];
             }
         }
+        tighten(views);
         return views;
     }
     // The main views on one side, the panels on the other: a main view weighs 1.5, a panel its
@@ -115,9 +154,39 @@ std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double g
     const double p = std::min(std::accumulate(pw.begin(), pw.end(), 0.0), m);
     const std::vector<Box> sides = split(area, {m, p}, wide, gap);
     place(mains, sides[0], width(sides[0]) >= height(sides[0]) * 1.15, mw);
-    place(panels, sides[1], !wide, pw);
+    // The panels' side: each image asks for the length that shows its raster across the side's
+    // whole breadth; when they all fit, the charts share what is left by weight, else every
+    // panel is sized by weight alone.
+    const bool along_x = !wide;
+    const Box& side = sides[1];
+    const double breadth = along_x ? height(side) : width(side);
+    const double length = (along_x ? width(side) : height(side)) - gap * double(panels.size() - 1);
+    std::vector<double> need(panels.size(), 0);
+    double images = 0, chart_weight = 0;
+    std::size_t charts = 0;
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        const Panel& p = scene.panels[panels[i].panel];
+        if (p.kind != PanelKind::Image) {
+            chart_weight += pw[i], ++charts;
+            continue;
+        }
+        const double a = image_aspect(p);
+        need[i] = along_x ? (breadth - header(p, breadth) - kImageMarginY) * a + kImageMarginX
+                          : (breadth - kImageMarginX) / a + header(p, breadth) + kImageMarginY;
+        images += need[i];
+    }
+    constexpr double kLeastChart = 200;  // a chart smaller than this is mostly its axes
+    if (images > 0 && charts > 0 && images + kLeastChart * double(charts) <= length) {
+        std::vector<double> lengths(panels.size());
+        for (std::size_t i = 0; i < panels.size(); ++i)
+            lengths[i] = need[i] > 0 ? need[i] : (length - images) * pw[i] / chart_weight;
+        place(panels, side, along_x, lengths);
+    } else {
+        place(panels, side, along_x, pw);
+    }
     out = mains;
     out.insert(out.end(), panels.begin(), panels.end());
+    tighten(out);
     return out;
 }
 

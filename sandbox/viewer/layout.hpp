@@ -12,6 +12,9 @@
 // small to see; a chart or an image using less than half of its panel.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,8 +37,20 @@ struct ViewSlot {
 // would be shown.
 bool shows_world(const Scene& scene);
 
+// How tall a panel's title and legend are when it is `width` pixels wide (the drawing's own
+// measure: an image panel is sized to its raster under them).
+using HeaderHeight = std::function<double(const Panel&, double width)>;
+
+// Screen pixels per cell for an image that may take `fit_x` × `fit_y` pixels per cell: the
+// smaller, in whole pixels (crisp, even cells) when that shrinks it by at most 15%.
+inline double image_zoom(double fit_x, double fit_y) {
+    const double zoom = std::min(fit_x, fit_y);
+    return zoom >= 2 && std::floor(zoom) >= 0.85 * zoom ? std::floor(zoom) : zoom;
+}
+
 // The views of `scene` in `area` (the canvas below the title strip), `gap` pixels apart.
-std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double gap = 6);
+std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double gap = 6,
+                                   const HeaderHeight& header = {});
 
 // What one drawing pass placed, in window pixels (y down). Panels are listed in the order of
 // the views; a label's or a focus element's `panel` indexes them.

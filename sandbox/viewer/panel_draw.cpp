@@ -12,6 +12,7 @@
 #include "viewer/im_colour.hpp"
 #include "viewer/layout.hpp"
 #include "viewer/palette.hpp"
+#include "viewer/text_wrap.hpp"
 
 namespace cg::viewer {
 
@@ -64,12 +65,15 @@ Range axis_range(const Axis& axis, Range data) {
     return r;
 }
 
-// Tick positions (in the axis's plotted units) at least `min_pixels` apart.
-std::vector<double> ticks(const Range& r, double pixels, double min_pixels, bool log) {
+// Tick positions (in the axis's plotted units) at least `min_pixels` apart: at multiples of the
+// axis's own step when it has one (a whole number of bands), else of a round number.
+std::vector<double> ticks(const Range& r, double pixels, double min_pixels, const Axis& axis) {
     std::vector<double> out;
     const double per_pixel = (r.hi - r.lo) / std::max(pixels, 1.0);
     double step = nice_step(min_pixels * per_pixel);
-    if (log) step = std::max(1.0, std::round(step));  // whole decades
+    if (axis.step > 0 && !axis.log)
+        step = axis.step * std::max(1.0, nice_step(min_pixels * per_pixel / axis.step));
+    if (axis.log) step = std::max(1.0, std::round(step));  // whole decades
     for (double v = std::ceil(r.lo / step - 1e-9) * step; v <= r.hi + 1e-9 * step; v += step)
         out.push_back(std::fabs(v) < step * 1e-9 ? 0 : v);
     return out;
@@ -79,6 +83,23 @@ std::string tick_text(double v, bool log) {
     if (!log) return num(v, 4);
     const double p = std::pow(10.0, v);
     return p >= 1e-3 && p <= 1e4 ? num(p, 4) : num(p, 2);
+}
+
+// A linear axis whose ticks are huge or tiny is read in a power of ten shared by all of them,
+// written once with the axis's label ("E (J), × 10¹³" over ticks 0, 1, 2, 3.5): the ticks stay
+// short and the plot keeps its width. Returns the exponent (0: none needed).
+int shared_power(const std::vector<double>& ticks, bool log) {
+    if (log) return 0;
+    double largest = 0;
+    for (double v : ticks) largest = std::max(largest, std::fabs(v));
+    if (largest == 0 || (largest < 1e5 && largest >= 1e-3)) return 0;
+    return static_cast<int>(std::floor(std::log10(largest)));
+}
+
+std::string with_power(const std::string& label, int power) {
+    if (power == 0) return label;
+    const std::string ten = num(std::pow(10.0, power));  // "10¹³", "10⁻⁵"
+    return label.empty() ? "× " + ten : label + ",  × " + ten;
 }
 
 // The layer with log10 applied to the coordinates of the log axes; points at or below 0 on a
@@ -126,18 +147,21 @@ double text_width(ImFont* font, const std::string& t) {
     return font->CalcTextSizeA(font->FontSize, FLT_MAX, 0, t.c_str()).x;
 }
 
-// The title, wrapped to the panel's width; returns the height it took.
+// The title, wrapped to the panel's width; returns the height it took (`dl` null: measures).
 double draw_title(ImDrawList* dl, const Box& box, const std::string& title, const Fonts& f) {
     if (title.empty()) return 4;
-    const std::string t = text_minus(title);
     const float wrap = static_cast<float>(std::max(box.max.x - box.min.x - 12, 20.0));
-    const ImVec2 size = f.ui->CalcTextSizeA(f.ui->FontSize, FLT_MAX, wrap, t.c_str());
-    dl->AddText(f.ui, f.ui->FontSize, im(box.min + glm::dvec2(6, 4)), im_colour(kCaptionText),
-                t.c_str(), nullptr, wrap);
+    // Broken at spaces only (ImGui's wrapping would split "t = 1.15" after its point).
+    const std::string t = wrap_at_spaces(f.ui, f.ui->FontSize, text_minus(title), wrap);
+    const ImVec2 size = f.ui->CalcTextSizeA(f.ui->FontSize, FLT_MAX, 0, t.c_str());
+    if (dl)
+        dl->AddText(f.ui, f.ui->FontSize, im(box.min + glm::dvec2(6, 4)), im_colour(kCaptionText),
+                    t.c_str());
     return size.y + 8;
 }
 
-// The legend's entries in rows across the panel's width; returns the height it took.
+// The legend's entries in rows across the panel's width; returns the height it took (`dl`
+// null: measures).
 double draw_legend(ImDrawList* dl, const Box& box, const std::vector<LegendEntry>& legend,
                    const Fonts& f) {
     if (legend.empty()) return 0;
@@ -147,6 +171,10 @@ double draw_legend(ImDrawList* dl, const Box& box, const std::vector<LegendEntry
         const std::string t = text_minus(e.text);
         const double w = swatch + 4 + text_width(f.small, t) + 14;
         if (x + w > box.max.x && x > box.min.x + 6) x = box.min.x + 6, y += row;
+        if (!dl) {
+            x += w;
+            continue;
+        }
         const ImU32 c = im_colour(style_rgba(e.style));
         const float mid = static_cast<float>(y + row / 2);
         if (e.marker) {
@@ -176,25 +204,46 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
     const Layer2 layer = logged(panel, panel.x.log, panel.y.log);
     Range dx, dy;
     data_range(layer, dx, dy);
-    const Range rx = axis_range(panel.x, dx), ry = axis_range(panel.y, dy);
 
     const double small = f.small->FontSize;
-    const double y_label = panel.y.label.empty() ? 0 : small + 4;
-    const double x_label = panel.x.label.empty() ? 0 : small + 4;
+    // (A shared power of ten is written with the axis's label: room for it either way.)
+    const double y_label = small + 4, x_label = small + 4;
     // Room for the y ticks' numbers: the widest of them.
     Box plot{{body.min.x, body.min.y + y_label + 4},
              {body.max.x - 12, body.max.y - small - 8 - x_label}};
-    const std::vector<double> yt = ticks(ry, plot.max.y - plot.min.y, 34, panel.y.log);
+    Range rx = axis_range(panel.x, dx), ry = axis_range(panel.y, dy);
+    std::vector<double> yt = ticks(ry, plot.max.y - plot.min.y, 34, panel.y);
+    int y_power = shared_power(yt, panel.y.log);
     double widest = 0;
-    for (double v : yt) widest = std::max(widest, text_width(f.small, tick_text(v, panel.y.log)));
+    for (double v : yt)
+        widest = std::max(widest,
+                          text_width(f.small, tick_text(v / std::pow(10.0, y_power), panel.y.log)));
     plot.min.x = body.min.x + widest + 12;
     if (plot.max.x - plot.min.x < 20 || plot.max.y - plot.min.y < 20) return ScreenMap{plot, {}};
-    const std::vector<double> xt = ticks(rx, plot.max.x - plot.min.x, 70, panel.x.log);
+    if (panel.equal_aspect) {
+        // One length for a unit of x and of y: the range with room to spare is widened about
+        // its middle until both fill the plot at the same scale.
+        const double sx = (plot.max.x - plot.min.x) / (rx.hi - rx.lo);
+        const double sy = (plot.max.y - plot.min.y) / (ry.hi - ry.lo);
+        Range& wider = sx < sy ? ry : rx;
+        const double scale = std::min(sx, sy);
+        const double half =
+            (sx < sy ? plot.max.y - plot.min.y : plot.max.x - plot.min.x) / scale / 2;
+        const double mid = (wider.lo + wider.hi) / 2;
+        wider.lo = mid - half, wider.hi = mid + half;
+        yt = ticks(ry, plot.max.y - plot.min.y, 34, panel.y);
+    }
+    y_power = shared_power(yt, panel.y.log);
+    const double y_unit = std::pow(10.0, y_power);
+    const std::vector<double> xt = ticks(rx, plot.max.x - plot.min.x, 70, panel.x);
+    const int x_power = shared_power(xt, panel.x.log);
+    const double x_unit = std::pow(10.0, x_power);
 
     ScreenMap map{plot, {}};
     map.view.center = {(rx.lo + rx.hi) / 2, (ry.lo + ry.hi) / 2};
     map.view.zoom = (plot.max.x - plot.min.x) / (rx.hi - rx.lo);
     map.y_scale = (plot.max.y - plot.min.y) / (ry.hi - ry.lo) / map.view.zoom;
+    if (panel.y.reversed) map.y_scale = -map.y_scale;  // a screen's rows: y grows downward
 
     // Grid lines at the ticks, the zero lines, the frame; the numbers outside it.
     const ImU32 grid = im_colour(kGridMajor), text = im_colour(kTickLabel);
@@ -202,7 +251,7 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
         const float x = static_cast<float>(std::floor(map.to_screen({v, 0}).x) + 0.5);
         dl->AddLine(ImVec2(x, float(plot.min.y)), ImVec2(x, float(plot.max.y)),
                     v == 0 && !panel.x.log ? im_colour(kZeroLine) : grid);
-        const std::string t = tick_text(v, panel.x.log);
+        const std::string t = tick_text(v / x_unit, panel.x.log);
         const double w = text_width(f.small, t);
         const double tx = std::clamp(x - w / 2, body.min.x, body.max.x - w);
         dl->AddText(f.small, f.small->FontSize, ImVec2(float(tx), float(plot.max.y + 3)), text,
@@ -218,11 +267,10 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
                     text, t.c_str());
     }
     dl->AddRect(im(plot.min), im(plot.max), im_colour(kPlotFrame));
-    if (!panel.y.label.empty())
+    if (const std::string t = with_power(text_minus(panel.y.label), y_power); !t.empty())
         dl->AddText(f.small, f.small->FontSize, ImVec2(float(body.min.x + 4), float(body.min.y)),
-                    im_colour(kCaptionText), text_minus(panel.y.label).c_str());
-    if (!panel.x.label.empty()) {
-        const std::string t = text_minus(panel.x.label);
+                    im_colour(kCaptionText), t.c_str());
+    if (const std::string t = with_power(text_minus(panel.x.label), x_power); !t.empty()) {
         dl->AddText(
             f.small, f.small->FontSize,
             ImVec2(float(plot.max.x - text_width(f.small, t)), float(body.max.y - small - 2)),
@@ -232,7 +280,11 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
     dl->PushClipRect(im(plot.min), im(plot.max), true);
     draw_scene(dl, map, layer, f, -1, {}, textures, rec, slot);
     dl->PopClipRect();
-    if (rec.record) rec.record->panels[rec.panel].content = plot;
+    // What the chart draws: the plot and its ticks' numbers (the axes' names and the title are
+    // the panel's own rows).
+    if (rec.record)
+        rec.record->panels[rec.panel].content = {{plot.min.x - widest - 8, plot.min.y},
+                                                 {plot.max.x, plot.max.y + small + 4}};
     return map;
 }
 
@@ -245,8 +297,7 @@ ScreenMap draw_image(ImDrawList* dl, const Box& body, const Panel& panel, const 
     const PixelGrid2& g = panel.grids.front();
     const double w = std::max(g.width, 1), h = std::max(g.height, 1);
     const glm::dvec2 room = map.canvas.max - map.canvas.min;
-    double zoom = std::min(room.x / w, room.y / h);
-    if (zoom >= 4) zoom = std::floor(zoom);  // whole screen pixels per cell: crisp, even cells
+    const double zoom = image_zoom(room.x / w, room.y / h);  // as the layout sized the panel
     map.view = {glm::dvec2(w / 2, h / 2), std::max(zoom, 1e-6)};
     const Box image{map.to_screen({0, h}), map.to_screen({w, 0})};
     draw_scene(dl, map, panel, f, -1, {}, textures, rec, slot);
@@ -259,6 +310,12 @@ ScreenMap draw_image(ImDrawList* dl, const Box& body, const Panel& panel, const 
 }  // namespace
 
 // --- [draw_panel] ----------------------------------------------------------------------------
+
+double panel_header_height(const Panel& panel, double width, const Fonts& fonts) {
+    const Box box{{0, 0}, {width, 1e6}};
+    const double title = draw_title(nullptr, box, panel.title, fonts);
+    return title + draw_legend(nullptr, {{0, title}, {width, 1e6}}, panel.legend, fonts);
+}
 
 ScreenMap draw_panel(ImDrawList* dl, const Box& box, const Panel& panel, const Fonts& fonts,
                      GridTextures* textures, std::size_t texture_slot, Recording rec) {
