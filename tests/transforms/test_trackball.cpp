@@ -442,8 +442,16 @@ TEST_CASE("trackball: the picture shows the viewport in 2D and the ball in 3D",
     for (const auto& s : scene.segments3) velocity3 = velocity3 || (s.arrow && s.label == "v");
     CHECK(velocity2);
     CHECK(velocity3);
-    REQUIRE(scene.frames3.size() == 1);
-    CHECK(scene.frames3[0].name == "R");
+    int cube = 0;  // the object turned by the drag (a cube's 12 edges), its front point's trail
+    for (const auto& s : scene.segments3) cube += s.style.role == cg::Role::Kept;
+    CHECK(cube == 12);
+    bool front = false;
+    for (const auto& p : scene.points3) front = front || p.label == "R·(0, 0, 1)";
+    CHECK(front);
+    // The 2D view is a window round the path (60 px in a 200 px ball): no more of the viewport.
+    CHECK(scene.polygons.size() >= 2);  // the disc's part and its rim
+    for (const auto& poly : scene.polygons)
+        for (const auto& q : poly.points) CHECK((q.x >= 50 && q.x <= 210 && q.y >= 50 && q.y <= 210));
 
     auto a = Arcball::start({{200, 200}, {{100, 100}, {160, 100}, {160, 160}}, {}});
     for (int k = 0; k < 3; ++k) Arcball::step(a, nullptr);  // s, t and the pair's rotation
