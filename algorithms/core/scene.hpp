@@ -9,8 +9,9 @@
 // A scene has up to two main views and any number of panels, each with coordinates of its own:
 //   - the 2D world (the Scene's own Layer2: world coordinates, right-handed, y up, on a grid);
 //   - the 3D view (faces3, segments3, …, seen through the viewer's orbiting camera);
-//   - panels: a chart (axes with their own ticks and units; series as lines, dots or bars) or
-//     an image (a raster shown pixel-exact, filling its panel, its title outside it).
+//   - panels: a chart (axes with their own ticks and units; series as lines, dots or bars), an
+//     image (a raster shown pixel-exact, filling its panel, its title outside it) or a diagram
+//     (a drawing in units of its own: a tree, a table of boxes).
 // The viewer lays the views out side by side or stacked, fits each to its content, and never
 // draws a chart or an image on the world's grid. `focus2`/`focus3` mark what the step is about:
 // the 3D camera frames it, and the layout checks that it is large enough to see.
@@ -204,6 +205,9 @@ struct Axis {
     bool include_zero = false;  // a fitted range reaches 0 (an energy, a count: not a wobble)
     double step = 0;            // ticks at multiples of this (1: whole numbers); 0: by the room
     bool reversed = false;      // y only: growing downward (a screen's rows)
+    // Categories instead of numbers: names[k] is written at the tick k (rows of a table, the
+    // slabs x, y, z, a drawing order); the range then defaults to −0.5 … size − 0.5.
+    std::vector<std::string> names = {};
 };
 
 // A line of a chart's legend: the series' style beside its name.
@@ -214,8 +218,9 @@ struct LegendEntry {
 };
 
 enum class PanelKind : std::uint8_t {
-    Chart,  // x and y in the axes' units, scaled apart; ticks and numbers of its own
-    Image,  // grids[0] is the raster; one cell a pixel or more, square; overlays in cell units
+    Chart,    // x and y in the axes' units, scaled apart; ticks and numbers of its own
+    Image,    // grids[0] is the raster; one cell a pixel or more, square; overlays in cell units
+    Diagram,  // a drawing in units of its own (a tree, a flow): fitted, one scale, no ticks
 };
 
 // The primitives (Layer2) are in the panel's coordinates: a chart's data (x, y), an image's
@@ -283,6 +288,16 @@ inline Panel& add_chart(Scene& scene, std::string title, Axis x, Axis y) {
     p.title = std::move(title);
     p.x = std::move(x);
     p.y = std::move(y);
+    scene.panels.push_back(std::move(p));
+    return scene.panels.back();
+}
+
+// A new diagram panel: a drawing whose coordinates mean nothing to the student (a tree, a
+// table of boxes), fitted to its panel at one scale, without axes.
+inline Panel& add_diagram(Scene& scene, std::string title) {
+    Panel p;
+    p.kind = PanelKind::Diagram;
+    p.title = std::move(title);
     scene.panels.push_back(std::move(p));
     return scene.panels.back();
 }

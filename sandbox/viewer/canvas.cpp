@@ -394,7 +394,8 @@ void draw_canvas(Session& s, bool interactive) {
                 proj = draw_view3(s, v.box, interactive, rec, clear);
                 break;
             case ViewKind::Chart:
-            case ViewKind::Image: {
+            case ViewKind::Image:
+            case ViewKind::Diagram: {
                 const Panel& p = scene.panels[v.panel];
                 panel_maps[v.panel] =
                     draw_panel(dl, v.box, p, s.fonts, s.textures, texture_slot, rec);
@@ -418,10 +419,7 @@ void draw_canvas(Session& s, bool interactive) {
             const ScreenMap& map = in_world ? *world_map : panel_maps[f.panel];
             const glm::dvec2 a = map.to_screen(f.lo), b = map.to_screen(f.hi);
             const int at = in_world ? index_of(ViewKind::World2d, -1)
-                                    : index_of(scene.panels[f.panel].kind == PanelKind::Image
-                                                   ? ViewKind::Image
-                                                   : ViewKind::Chart,
-                                               f.panel);
+                                    : index_of(view_kind(scene.panels[f.panel]), f.panel);
             record->focus.push_back({{glm::min(a, b), glm::max(a, b)}, at});
         }
         if (proj)

@@ -16,8 +16,22 @@ const char* view_kind_name(ViewKind kind) {
             return "chart";
         case ViewKind::Image:
             return "image";
+        case ViewKind::Diagram:
+            return "diagram";
     }
     return "?";
+}
+
+ViewKind view_kind(const Panel& panel) {
+    switch (panel.kind) {
+        case PanelKind::Image:
+            return ViewKind::Image;
+        case PanelKind::Diagram:
+            return ViewKind::Diagram;
+        case PanelKind::Chart:
+            break;
+    }
+    return ViewKind::Chart;
 }
 
 namespace {
@@ -106,9 +120,7 @@ std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double g
     if (three) mains.push_back({ViewKind::View3d, -1, area});
     if (world) mains.push_back({ViewKind::World2d, -1, area});
     for (std::size_t i = 0; i < scene.panels.size(); ++i)
-        panels.push_back(
-            {scene.panels[i].kind == PanelKind::Image ? ViewKind::Image : ViewKind::Chart,
-             static_cast<int>(i), area});
+        panels.push_back({view_kind(scene.panels[i]), static_cast<int>(i), area});
 
     const bool wide = width(area) >= height(area) * 1.15;
     auto place = [&](std::vector<ViewSlot>& views, const Box& box, bool along_x,
@@ -256,7 +268,8 @@ std::vector<std::string> layout_problems(const LayoutRecord& r) {
         if (std::max(width(f.box), height(f.box)) < 24)
             out.push_back("a focus element " + text(f.box) + " is under 24 px");
     for (const LayoutRecord::Panel& p : r.panels)
-        if ((p.kind == ViewKind::Chart || p.kind == ViewKind::Image) &&
+        if ((p.kind == ViewKind::Chart || p.kind == ViewKind::Image ||
+             p.kind == ViewKind::Diagram) &&
             area_of(p.content) < 0.5 * area_of(p.box))
             out.push_back(std::string("a ") + view_kind_name(p.kind) + " " + text(p.content) +
                           " uses less than half of its panel " + text(p.box));

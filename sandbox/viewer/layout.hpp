@@ -24,12 +24,16 @@
 
 namespace cg::viewer {
 
-enum class ViewKind { World2d, View3d, Chart, Image };
-const char* view_kind_name(ViewKind kind);  // "world2d", "view3d", "chart", "image"
+enum class ViewKind { World2d, View3d, Chart, Image, Diagram };
+// "world2d", "view3d", "chart", "image", "diagram"
+const char* view_kind_name(ViewKind kind);
+
+// The view kind of a panel.
+ViewKind view_kind(const Panel& panel);
 
 struct ViewSlot {
     ViewKind kind = ViewKind::World2d;
-    int panel = -1;  // Chart and Image: the index into Scene::panels
+    int panel = -1;  // Chart, Image and Diagram: the index into Scene::panels
     Box box;
 };
 

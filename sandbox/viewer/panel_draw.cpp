@@ -1,6 +1,7 @@
-// A scene's panels: charts (axes, ticks and numbers in their own units, series, a legend) and
-// images (a raster filling its panel, pixel-exact). Sections: [ranges and ticks] [title and
-// legend] [chart] [image] [draw_panel].
+// A scene's panels: charts (axes, ticks and numbers in their own units, series, a legend),
+// images (a raster filling its panel, pixel-exact) and diagrams (a drawing fitted at one
+// scale). Sections: [ranges and ticks] [title and legend] [chart] [image] [diagram]
+// [draw_panel].
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -52,6 +53,11 @@ Range axis_range(const Axis& axis, Range data) {
         r.hi = axis.log ? std::log10(std::max(axis.hi, 1e-300)) : axis.hi;
         return r;
     }
+    if (!axis.names.empty()) {  // every category in view, half a step round each
+        data.add(-0.5);
+        data.add(static_cast<double>(axis.names.size()) - 0.5);
+        return data;
+    }
     if (data.empty()) data.lo = 0, data.hi = 1;
     if (axis.include_zero && !axis.log) data.add(0);
     if (data.hi - data.lo <= 1e-12 * std::max(1.0, std::fabs(data.hi))) {
@@ -70,6 +76,12 @@ Range axis_range(const Axis& axis, Range data) {
 std::vector<double> ticks(const Range& r, double pixels, double min_pixels, const Axis& axis) {
     std::vector<double> out;
     const double per_pixel = (r.hi - r.lo) / std::max(pixels, 1.0);
+    if (!axis.names.empty()) {  // the categories, every k-th one when they are crowded
+        const std::size_t stride =
+            std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(min_pixels * per_pixel)));
+        for (std::size_t k = 0; k < axis.names.size(); k += stride) out.push_back(double(k));
+        return out;
+    }
     double step = nice_step(min_pixels * per_pixel);
     if (axis.step > 0 && !axis.log)
         step = axis.step * std::max(1.0, nice_step(min_pixels * per_pixel / axis.step));
@@ -85,11 +97,20 @@ std::string tick_text(double v, bool log) {
     return p >= 1e-3 && p <= 1e4 ? num(p, 4) : num(p, 2);
 }
 
+// A tick's text: its category's name, or its number in the axis's shared power of ten.
+std::string tick_label(const Axis& axis, double v, double unit) {
+    if (!axis.names.empty()) {
+        const long k = std::lround(v);
+        return k >= 0 && k < static_cast<long>(axis.names.size()) ? text_minus(axis.names[k]) : "";
+    }
+    return tick_text(v / unit, axis.log);
+}
+
 // A linear axis whose ticks are huge or tiny is read in a power of ten shared by all of them,
 // written once with the axis's label ("E (J), × 10¹³" over ticks 0, 1, 2, 3.5): the ticks stay
 // short and the plot keeps its width. Returns the exponent (0: none needed).
-int shared_power(const std::vector<double>& ticks, bool log) {
-    if (log) return 0;
+int shared_power(const std::vector<double>& ticks, const Axis& axis) {
+    if (axis.log || !axis.names.empty()) return 0;
     double largest = 0;
     for (double v : ticks) largest = std::max(largest, std::fabs(v));
     if (largest == 0 || (largest < 1e5 && largest >= 1e-3)) return 0;
@@ -213,11 +234,11 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
              {body.max.x - 12, body.max.y - small - 8 - x_label}};
     Range rx = axis_range(panel.x, dx), ry = axis_range(panel.y, dy);
     std::vector<double> yt = ticks(ry, plot.max.y - plot.min.y, 34, panel.y);
-    int y_power = shared_power(yt, panel.y.log);
+    int y_power = shared_power(yt, panel.y);
     double widest = 0;
     for (double v : yt)
-        widest = std::max(widest,
-                          text_width(f.small, tick_text(v / std::pow(10.0, y_power), panel.y.log)));
+        widest =
+            std::max(widest, text_width(f.small, tick_label(panel.y, v, std::pow(10.0, y_power))));
     plot.min.x = body.min.x + widest + 12;
     if (plot.max.x - plot.min.x < 20 || plot.max.y - plot.min.y < 20) return ScreenMap{plot, {}};
     if (panel.equal_aspect) {
@@ -233,10 +254,10 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
         wider.lo = mid - half, wider.hi = mid + half;
         yt = ticks(ry, plot.max.y - plot.min.y, 34, panel.y);
     }
-    y_power = shared_power(yt, panel.y.log);
+    y_power = shared_power(yt, panel.y);
     const double y_unit = std::pow(10.0, y_power);
     const std::vector<double> xt = ticks(rx, plot.max.x - plot.min.x, 70, panel.x);
-    const int x_power = shared_power(xt, panel.x.log);
+    const int x_power = shared_power(xt, panel.x);
     const double x_unit = std::pow(10.0, x_power);
 
     ScreenMap map{plot, {}};
@@ -251,7 +272,7 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
         const float x = static_cast<float>(std::floor(map.to_screen({v, 0}).x) + 0.5);
         dl->AddLine(ImVec2(x, float(plot.min.y)), ImVec2(x, float(plot.max.y)),
                     v == 0 && !panel.x.log ? im_colour(kZeroLine) : grid);
-        const std::string t = tick_text(v / x_unit, panel.x.log);
+        const std::string t = tick_label(panel.x, v, x_unit);
         const double w = text_width(f.small, t);
         const double tx = std::clamp(x - w / 2, body.min.x, body.max.x - w);
         dl->AddText(f.small, f.small->FontSize, ImVec2(float(tx), float(plot.max.y + 3)), text,
@@ -261,7 +282,7 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
         const float y = static_cast<float>(std::floor(map.to_screen({0, v}).y) + 0.5);
         dl->AddLine(ImVec2(float(plot.min.x), y), ImVec2(float(plot.max.x), y),
                     v == 0 && !panel.y.log ? im_colour(kZeroLine) : grid);
-        const std::string t = tick_text(v, panel.y.log);
+        const std::string t = tick_label(panel.y, v, y_unit);
         dl->AddText(f.small, f.small->FontSize,
                     ImVec2(float(plot.min.x - 6 - text_width(f.small, t)), float(y - small / 2)),
                     text, t.c_str());
@@ -307,6 +328,17 @@ ScreenMap draw_image(ImDrawList* dl, const Box& body, const Panel& panel, const 
     return map;
 }
 
+// --- [diagram] -------------------------------------------------------------------------------
+
+// A drawing in units of its own, fitted at one scale with room for its labels, no axes.
+ScreenMap draw_diagram(ImDrawList* dl, const Box& body, const Panel& panel, const Fonts& f,
+                       GridTextures* textures, std::size_t slot, Recording rec) {
+    ScreenMap map{body, fit_view(panel, body.max - body.min, 24)};
+    const Box drawn = draw_scene(dl, map, panel, f, -1, {}, textures, rec, slot);
+    if (rec.record) rec.record->panels[rec.panel].content = drawn;
+    return map;
+}
+
 }  // namespace
 
 // --- [draw_panel] ----------------------------------------------------------------------------
@@ -326,6 +358,8 @@ ScreenMap draw_panel(ImDrawList* dl, const Box& box, const Panel& panel, const F
     const Box body{{box.min.x + 4, box.min.y + top}, {box.max.x - 4, box.max.y - 4}};
     const ScreenMap map = panel.kind == PanelKind::Image
                               ? draw_image(dl, body, panel, fonts, textures, texture_slot, rec)
+                          : panel.kind == PanelKind::Diagram
+                              ? draw_diagram(dl, body, panel, fonts, textures, texture_slot, rec)
                               : draw_chart(dl, body, panel, fonts, textures, texture_slot, rec);
     dl->PopClipRect();
     return map;
