@@ -514,7 +514,6 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
     const dmat3 so_far = applied(s);
     double reach = 2.0;
     for (const dvec3& p : s.in->points) reach = std::max(reach, 1.15 * glm::length(p));
-    scene.extent3 = reach;
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.3, "", 0.9f});
 
     const double L = 0.85 * reach;
@@ -528,7 +527,7 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
                                  ? "a (turned)"
                                  : "a = " + num(s.in->axis, 4),
                              {Role::Active}});
-    if (moved) {
+    if (moved && glm::length(now - unit) > 1e-9) {  // the axis away from where it started
         scene.segments3.push_back({-L * unit, L * unit, "", construction, true});
         scene.labels3.push_back({L * unit, "a (start)", {Role::Construction}});
     }
@@ -542,6 +541,15 @@ void ArbitraryAxis::draw(const State& s, Scene& scene) {
     h.size = 0.55;
     if (moved) rot::draw_house(scene, h, dmat3(1.0), true);
     rot::draw_house(scene, h, so_far, false);
+    // The camera frames what is drawn: the axis (both where it started and where it is now),
+    // the house (both), the points and their images — not a sphere round the origin.
+    dvec3 lo = -L * unit, hi = -L * unit;
+    const auto frame = [&](dvec3 p) { lo = glm::min(lo, p), hi = glm::max(hi, p); };
+    for (const dvec3 p : {L * unit, L * now, -L * now}) frame(p);
+    for (const dvec3& p : rot::house_points(h)) frame(p), frame(so_far * p);
+    for (const dvec3& p : s.in->points) frame(p);
+    for (const dvec3& p : s.rotated) frame(p);
+    add_focus(scene, lo, hi);
 
     const dvec3 ei(s.i == 0, s.i == 1, s.i == 2), ej(s.j == 0, s.j == 1, s.j == 2),
         ek(s.k == 0, s.k == 1, s.k == 2);

@@ -301,7 +301,9 @@ EulerAngles::Result EulerAngles::result(const State& s) {
 // turns things in. At the lock the inner and outer axes coincide and are drawn in red.
 void EulerAngles::draw(const State& s, Scene& scene) {
     const std::string& o = s.in.order;
-    scene.extent3 = 1.9;
+    // The camera frames the house and its frame (and the gimbal's rings from the product on).
+    const double frame = s.last == Phase::Roll ? 1.25 : 1.6;
+    add_focus(scene, dvec3(-frame), dvec3(frame));
     scene.frames3.push_back({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5, "", 0.35f});
     rot::HousePlacement h;
     h.size = 0.9;

@@ -1125,7 +1125,10 @@ void draw_rotate(const State& s, Scene& scene, double reach) {
 // the axis, θ and the frame of the quaternion built; the frame of M (its columns); R's frame
 // and the axis and angle read from it.
 void Quaternion::draw(const State& s, Scene& scene) {
-    scene.extent3 = 1.6;
+    // The camera frames the unit ball the frames and axes live in (the axis reaches 1.4; the
+    // camera keeps a box's corners in view, so a box of half side 0.85 frames a ball of radius
+    // 1.5), or the point and its image.
+    add_focus(scene, dvec3(-0.85), dvec3(0.85));
     world_frame(scene);
     const bool first = s.phase == Quaternion::first_phase(s.in->op);
     switch (s.in->op) {
@@ -1138,7 +1141,8 @@ void Quaternion::draw(const State& s, Scene& scene) {
             return;
         case Op::Rotate: {
             const double reach = std::max(1.4, 1.15 * length3(s.in->point));
-            scene.extent3 = std::max(1.6, 1.2 * length3(s.in->point));
+            const double half = std::max(1.0, 0.8 * length3(s.in->point));
+            scene.focus3 = {{dvec3(-half), dvec3(half)}};
             draw_rotate(s, scene, reach);
             return;
         }
