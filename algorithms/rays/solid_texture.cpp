@@ -1,4 +1,4 @@
-// Sections: [spec] [validate] [advance] [narrate] [draw]
+// Sections: [spec] [validate] [advance] [narrate]; the picture is in solid_texture_draw.cpp.
 #include "rays/solid_texture.hpp"
 
 #include <algorithm>
@@ -6,11 +6,9 @@
 #include <glm/geometric.hpp>
 
 #include "core/format.hpp"
-#include "rays/texture_draw.hpp"
 
 namespace cg {
 
-using glm::dvec2;
 using glm::dvec3;
 using Phase = SolidTextureAlgo::Phase;
 
@@ -65,17 +63,19 @@ const Spec& SolidTextureAlgo::spec() {
         },
         {},  // no sliders
         {
-            .predict = {
-                {"lattice", {"cell"}},
-                {"fade", {"fade"}},
-                {"interpolate", {"noise"}},
-                {"colour", {"colour"}},
-            },
-            .mistakes = {
-                {"lattice", "q", "copy:p", "forgot to scale p by the frequency"},
-                {"turbulence", "", "event:colour",
-                 "skipped the turbulence sum and used plain noise"},
-            },
+            .predict =
+                {
+                    {"lattice", {"cell"}},
+                    {"fade", {"fade"}},
+                    {"interpolate", {"noise"}},
+                    {"colour", {"colour"}},
+                },
+            .mistakes =
+                {
+                    {"lattice", "q", "copy:p", "forgot to scale p by the frequency"},
+                    {"turbulence", "", "event:colour",
+                     "skipped the turbulence sum and used plain noise"},
+                },
         },
     };
     return spec;
@@ -300,74 +300,6 @@ void SolidTextureAlgo::narrate(const State& s, StepInfo& info) {
     }
     if (s.last == Phase::Point || s.last == Phase::Colour)
         info.vars.push_back({"colour", vec(s.r.samples[i].color)});
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// 3D: the points in their colours; while a point's noise is worked, its lattice cell (in world
-// units), the corner gradients and the point. 2D: the fade curve (and the classic 3t² − 2t³,
-// dashed) with the point's three fractions on it.
-void SolidTextureAlgo::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    const SolidTexture& t = in.texture;
-    double extent = 1;
-    for (std::size_t i = 0; i < in.points.size() && i < 4000; ++i) {
-        const bool known = i < s.r.samples.size();
-        scene.points3.push_back({in.points[i],
-                                 "",
-                                 {Role::Subject, 1.0f, false,
-                                  known ? pack_rgba(s.r.samples[i].color) : 0x80808060u},
-                                 known ? 6.0f : 3.0f});
-        extent = std::max(extent, glm::length(in.points[i]));
-    }
-    const bool working = s.r.has_detail && (s.last >= Phase::Lattice && s.last <= Phase::Colour) &&
-                         s.last != Phase::Point;
-    if (working) {
-        const NoiseDetail& d = s.r.detail;
-        const dvec3 c0(d.cell[0], d.cell[1], d.cell[2]);
-        const double f = t.frequency;
-        auto world = [&](dvec3 q) { return q / f; };
-        for (int a = 0; a < 8; ++a)
-            for (int axis = 0; axis < 3; ++axis) {
-                if (a & (4 >> axis)) continue;
-                const dvec3 A = c0 + dvec3((a >> 2) & 1, (a >> 1) & 1, a & 1);
-                dvec3 B = A;
-                B[axis] += 1;
-                scene.segments3.push_back({world(A), world(B), "", {Role::Window, 1.0f}, false});
-            }
-        const auto& G = perlin_gradients();
-        for (int k = 0; k < 8; ++k) {
-            const dvec3 c = c0 + dvec3((k >> 2) & 1, (k >> 1) & 1, k & 1);
-            scene.segments3.push_back({world(c),
-                                       world(c + 0.35 * G[d.gradient[k]]),
-                                       s.last >= Phase::Gradients ? corner_name(k) : "",
-                                       {Role::Entering, 2.0f},
-                                       true});
-        }
-        scene.points3.push_back({in.points[in.detail], "p", {Role::Active}, 7.0f});
-        scene.extent3 = 1.2 * std::max(glm::length(world(c0)), glm::length(world(c0 + dvec3(1.0))));
-    } else {
-        scene.extent3 = extent * 1.2;
-    }
-    if (!noisy(t)) return;
-    std::vector<dvec2> quintic, cubic;
-    for (int i = 0; i <= 60; ++i) {
-        const double x = i / 60.0;
-        quintic.push_back({x, fade(x)});
-        cubic.push_back({x, x * x * (3 - 2 * x)});
-    }
-    scene.polygons.push_back({quintic, {Role::Subject, 2.0f}, false, false});
-    scene.polygons.push_back({cubic, {Role::Construction, 1.0f, true}, false, false});
-    scene.segments.push_back({{0, 0}, {1.1, 0}, "t", {Role::Neutral, 1.0f}, true});
-    scene.segments.push_back({{0, 0}, {0, 1.1}, "f(t)", {Role::Neutral, 1.0f}, true});
-    scene.labels.push_back(
-        {{0.02, 1.15}, "fade 6t⁵ − 15t⁴ + 10t³ (dashed: 3t² − 2t³)", {Role::Neutral}});
-    if (working && s.last >= Phase::Fade) {
-        const NoiseDetail& d = s.r.detail;
-        const char* names[] = {"x", "y", "z"};
-        for (int k = 0; k < 3; ++k)
-            scene.points.push_back({{d.frac[k], d.fade[k]}, names[k], {Role::Active}, 5.0f});
-    }
 }
 
 }  // namespace cg

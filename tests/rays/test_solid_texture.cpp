@@ -323,6 +323,17 @@ TEST_CASE("solid-texture: the picture shows the points, the lattice cell and the
     }
     CHECK(edges == 12);
     CHECK(gradients == 8);
-    CHECK(scene.polygons.size() == 2);  // the quintic and the cubic fade
-    CHECK(scene.points.size() == 3);    // x, y, z on the curve
+    // The fade curve is a chart: the quintic and the cubic, x, y, z on it.
+    CHECK_FALSE(scene.has_2d());
+    REQUIRE(scene.panels.size() == 1);
+    const cg::Panel& chart = scene.panels[0];
+    CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.polygons.size() == 2);
+    CHECK(chart.legend.size() == 2);
+    CHECK(chart.points.size() == 3);
+    // The camera frames the lattice cell; the block's walls show the texture (not one colour).
+    CHECK(scene.focus3.size() == 1);
+    std::set<std::uint32_t> colours;
+    for (const auto& f : scene.faces3) colours.insert(f.style.rgba);
+    CHECK(colours.size() > 20);
 }
