@@ -1,4 +1,5 @@
-// Sections: [helpers] [plain functions] [spec] [validate] [advance] [narrate] [result] [draw]
+// Sections: [helpers] [plain functions] [spec] [validate] [advance] [narrate] [result]; the
+// picture is in sampling_draw.cpp.
 #include "sampling/sampling.hpp"
 
 #include <algorithm>
@@ -58,7 +59,8 @@ const char* image_id(Sampling::ImageKind k) {
 }
 
 void check_finite(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
+    if (!std::isfinite(v))
+        throw InputError(field, "must be a finite number (got " + given(v) + ")");
 }
 
 }  // namespace
@@ -237,16 +239,18 @@ const Spec& Sampling::spec() {
         {},  // no sliders
         {
             .predict = {{"sample", {"x_n"}}, {"fold", {"alias"}}},
-            .mistakes = {
-                {"fold", "alias", "copy:f", "forgot to fold: took the alias to be f itself"},
-                {"fold", "aliased", "not", "compared f with f_s instead of f_s / 2"},
-                {"fold", "k", "off-by-one", "folded about the wrong multiple of f_s"},
-            },
-            .variants = {
-                {"nearest", "/reconstruction", "\"nearest\""},
-                {"linear", "/reconstruction", "\"linear\""},
-                {"sinc", "/reconstruction", "\"sinc\""},
-            },
+            .mistakes =
+                {
+                    {"fold", "alias", "copy:f", "forgot to fold: took the alias to be f itself"},
+                    {"fold", "aliased", "not", "compared f with f_s instead of f_s / 2"},
+                    {"fold", "k", "off-by-one", "folded about the wrong multiple of f_s"},
+                },
+            .variants =
+                {
+                    {"nearest", "/reconstruction", "\"nearest\""},
+                    {"linear", "/reconstruction", "\"linear\""},
+                    {"sinc", "/reconstruction", "\"sinc\""},
+                },
         },
     };
     return spec;
@@ -354,8 +358,8 @@ void Sampling::validate(const Input& in) {
                 throw InputError("image.square",
                                  "must be between 10⁻⁶ and 10⁶ (got " + given(im.square) + ")");
             if (im.focal < 1e-6 || im.focal > 1e6)
-                throw InputError("image.focal",
-                                 "must be between 10⁻⁶ and 10⁶ pixels (got " + given(im.focal) + ")");
+                throw InputError("image.focal", "must be between 10⁻⁶ and 10⁶ pixels (got " +
+                                                    given(im.focal) + ")");
             break;
         case ImageKind::ZonePlate:
             check_finite(im.nyquist_radius, "image.nyquist_radius");
@@ -635,201 +639,6 @@ Sampling::Result Sampling::result(const State& s) {
     r.supersampled = s.supersampled;
     r.rms_difference = s.rms_difference;
     return r;
-}
-
-// ---- [draw] ---------------------------------------------------------------------------------
-
-namespace {
-
-// 1D: the time plot on top (x = 10 t / duration, y = 1.6 s / Σ|A|): the signal (grey), its
-// samples (stems and dots), the reconstruction (green) and, at a fold, the component and its
-// alias (dashed) through the same samples. Below it the spectrum, 0 … the larger of f_max and
-// f_s on a 10-wide axis: f_s/2 and f_s marked, each frequency a bar of height |A|, and its
-// alias (red when aliased) with the fold as an arrow.
-void draw_signal(const State& s, Scene& scene) {
-    const Sampling::Input& in = *s.in;
-    double amp = 0;
-    for (const auto& c : in.signal) amp += std::fabs(c.amplitude);
-    const double ys = amp > 0 ? 1.6 / amp : 1;
-    const double xs = 10 / in.duration;
-    auto at = [&](double t, double v) { return dvec2(t * xs, v * ys); };
-    scene.segments.push_back({{0, 0}, {10.4, 0}, "", {Role::Construction, 1.0f}, true});
-    scene.labels.push_back({{10.5, -0.1}, "t", {Role::Neutral}});
-    scene.labels.push_back({{10, -0.35}, "t = " + num(in.duration, 6), {Role::Neutral}});
-    scene.labels.push_back(
-        {{0, 2.0}, "s(t) and its samples, f_s = " + num(in.rate, 6), {Role::Neutral}});
-
-    const int m = 300;
-    auto curve = [&](auto&& f, Style style) {
-        Polygon2 p;
-        p.closed = false;
-        p.style = style;
-        p.points.reserve(m + 1);
-        for (int q = 0; q <= m; ++q) {
-            const double t = in.duration * q / m;
-            p.points.push_back(at(t, f(t)));
-        }
-        scene.polygons.push_back(std::move(p));
-    };
-    curve([&](double t) { return Sampling::signal(in.signal, t); }, {Role::Subject, 1.5f});
-
-    if (s.last == Phase::Fold && !s.aliases.empty()) {  // the component and its alias
-        const std::size_t k = s.aliases.size() - 1;
-        const auto c = in.signal[k];
-        const auto a = s.aliases[k];
-        if (in.signal.size() > 1)
-            curve(
-                [&](double t) {
-                    return c.amplitude * std::sin(2 * kPi * c.frequency * t + rad(c.phase));
-                },
-                {Role::Active, 1.5f});
-        curve(
-            [&](double t) {
-                return c.amplitude * std::sin(2 * kPi * a.alias * t + rad(a.alias_phase));
-            },
-            {a.aliased ? Role::Discarded : Role::Kept, 2.0f, true});
-        // The component's own samples, on both curves.
-        for (const auto& x : s.samples) {
-            const double v = c.amplitude * std::sin(2 * kPi * c.frequency * x.x + rad(c.phase));
-            scene.points.push_back({at(x.x, v), "", {Role::Active}, 3.5f});
-        }
-    }
-    if (!s.curve.empty()) {
-        Polygon2 p;
-        p.closed = false;
-        p.style = {Role::Kept, 2.5f};
-        for (const auto& q : s.curve) p.points.push_back(at(q.x, q.y));
-        scene.polygons.push_back(std::move(p));
-    }
-    const bool many = s.samples.size() > 200;
-    for (std::size_t n = 0; n < s.samples.size(); ++n) {
-        const dvec2 p = at(s.samples[n].x, s.samples[n].y);
-        const bool last = n + 1 == s.samples.size() && s.last == Phase::Sample;
-        if (!many) scene.segments.push_back({{p.x, 0}, p, "", {Role::Construction, 1.0f}, false});
-        scene.points.push_back({p,
-                                last ? "x" + std::to_string(n) : "",
-                                {last ? Role::Active : Role::Window},
-                                many ? 2.0f : 4.0f});
-    }
-
-    // The spectrum.
-    const double y0 = -3.6;
-    double fmax = in.rate;
-    for (const auto& c : in.signal) fmax = std::max(fmax, c.frequency);
-    const double fx = 10 / (fmax * 1.05);
-    auto bar_h = [&](double a) { return 1.2 * std::fabs(a) / std::max(amp, 1e-300); };
-    scene.segments.push_back({{0, y0}, {10.4, y0}, "", {Role::Neutral, 1.0f}, true});
-    scene.labels.push_back({{10.5, y0 - 0.1}, "f", {Role::Neutral}});
-    scene.labels.push_back(
-        {{0, y0 + 1.75}, "spectrum: each frequency folds into [0, f_s/2]", {Role::Neutral}});
-    for (int k = 1; k * in.rate / 2 <= fmax * 1.05 && k <= 40; ++k) {
-        const double x = k * in.rate / 2 * fx;
-        const bool nyquist = k == 1;
-        scene.segments.push_back({{x, y0 - 0.2},
-                                  {x, y0 + 1.4},
-                                  "",
-                                  {nyquist ? Role::Window : Role::Construction, 1.0f, true},
-                                  false});
-        if (k <= 4)
-            scene.labels.push_back({{x + 0.05, y0 - 0.45},
-                                    k == 1   ? "f_s/2"
-                                    : k == 2 ? "f_s"
-                                    : k == 3 ? "3f_s/2"
-                                             : "2f_s",
-                                    {nyquist ? Role::Window : Role::Neutral}});
-    }
-    scene.polygons.push_back(
-        {{{0, y0}, {in.rate / 2 * fx, y0}, {in.rate / 2 * fx, y0 + 1.4}, {0, y0 + 1.4}},
-         {Role::Window, 1.0f},
-         true,
-         true});
-    for (std::size_t k = 0; k < in.signal.size(); ++k) {
-        const auto& c = in.signal[k];
-        const double x = c.frequency * fx, h = bar_h(c.amplitude);
-        const bool current = s.last == Phase::Fold && k + 1 == s.aliases.size();
-        scene.segments.push_back({{x, y0},
-                                  {x, y0 + h},
-                                  num(c.frequency, 4),
-                                  {current ? Role::Active : Role::Subject, 3.0f},
-                                  false});
-        if (k < s.aliases.size() && s.aliases[k].aliased && s.aliases[k].alias != c.frequency) {
-            const double xa = s.aliases[k].alias * fx;
-            scene.segments.push_back({{xa, y0}, {xa, y0 + h}, "", {Role::Discarded, 3.0f}, false});
-            scene.labels.push_back(
-                {{xa + 0.05, y0 + h + 0.1}, num(s.aliases[k].alias, 4), {Role::Discarded}});
-            scene.segments.push_back(
-                {{x, y0 + h + 0.15}, {xa, y0 + h + 0.15}, "", {Role::Discarded, 1.5f, true}, true});
-        }
-    }
-}
-
-std::uint32_t grey(double v) {
-    const auto c = static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-    return c << 24 | c << 16 | c << 8 | 0xffu;
-}
-
-// 2D: the point-sampled image at the origin, the supersampled one beside it, filled row by row.
-void draw_image(const State& s, Scene& scene) {
-    const Sampling::Input& in = *s.in;
-    const int w = in.width, h = in.height;
-    const double gap = std::max(2.0, w / 8.0);
-    for (int side = 0; side < 2; ++side) {
-        PixelGrid2 g;
-        g.origin = {side * (w + gap), 0};
-        g.width = w, g.height = h;
-        g.rgba.assign(std::size_t(w) * h, 0);
-        const auto& v = side == 0 ? s.point_sampled : s.supersampled;
-        for (std::size_t k = 0; k < v.size(); ++k) g.rgba[k] = grey(v[k]);
-        g.grid_lines = w <= 32;
-        scene.grids.push_back(std::move(g));
-        const double x0 = side * (w + gap);
-        scene.polygons.push_back({{{x0, 0}, {x0 + w, 0}, {x0 + w, double(h)}, {x0, double(h)}},
-                                  {Role::Construction, 1.0f},
-                                  true,
-                                  false});
-        scene.labels.push_back({{x0, h + std::max(0.6, h / 40.0)},
-                                side == 0 ? "1 sample per pixel (the centre)"
-                                          : std::to_string(in.samples) + " " +
-                                                sampling::pattern_id(in.pattern) + " samples, " +
-                                                sampling::filter_id(in.filter) + " filter",
-                                {Role::Neutral}});
-        if (s.row >= 0 && s.phase != Phase::Done)
-            scene.polygons.push_back({{{x0, double(s.row)},
-                                       {x0 + w, double(s.row)},
-                                       {x0 + w, s.row + 1.0},
-                                       {x0, s.row + 1.0}},
-                                      {Role::Active, 2.0f},
-                                      true,
-                                      false});
-    }
-    if (in.image.kind == Sampling::ImageKind::ZonePlate) {  // the Nyquist circle r = ρ
-        const double r = in.image.nyquist_radius;
-        for (int side = 0; side < 2; ++side) {
-            const dvec2 c(side * (w + gap) + w / 2.0, h / 2.0);
-            Polygon2 p;
-            p.style = {Role::Window, 1.5f, true};
-            for (int a = 0; a < 64; ++a)
-                p.points.push_back(c + r * dvec2(std::cos(a * kPi / 32), std::sin(a * kPi / 32)));
-            scene.polygons.push_back(std::move(p));
-        }
-    } else if (in.image.kind == Sampling::ImageKind::Edge) {
-        scene.handles.push_back({in.image.point, "edge", "/image/point/0", "/image/point/1"});
-    } else {
-        scene.segments.push_back({{0, in.image.horizon},
-                                  {double(w), in.image.horizon},
-                                  "horizon",
-                                  {Role::Window, 1.0f, true},
-                                  false});
-    }
-}
-
-}  // namespace
-
-void Sampling::draw(const State& s, Scene& scene) {
-    if (s.in->mode == Mode::Signal)
-        draw_signal(s, scene);
-    else
-        draw_image(s, scene);
 }
 
 }  // namespace cg

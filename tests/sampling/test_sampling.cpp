@@ -320,19 +320,31 @@ TEST_CASE("sampling: determinism, resumability and the picture", "[sampling]") {
     for (int k = 0; k < 12; ++k) run->step(nullptr);
     cg::Scene scene;
     run->draw(scene);
+    // Two charts in their own units, nothing on the world's grid: s(t) against t, the spectrum.
+    CHECK_FALSE(scene.has_2d());
+    REQUIRE(scene.panels.size() == 2);
+    CHECK(scene.panels[0].x.label == "t");
+    CHECK(scene.panels[1].x.label == "f");
     bool alias_curve = false;
-    for (const auto& p : scene.polygons)
+    for (const auto& p : scene.panels[0].polygons)
         alias_curve = alias_curve || (p.style.role == cg::Role::Discarded && p.style.dashed);
     CHECK(alias_curve);
-    // 2D: two pixel grids side by side, filled up to the current row.
+    bool alias_bar = false;  // 7 folds to 3, a red bar at f = 3
+    for (const auto& sg : scene.panels[1].segments)
+        alias_bar = alias_bar || (sg.style.role == cg::Role::Discarded && sg.a.x == Approx(3));
+    CHECK(alias_bar);
+    // 2D: two image panels, filled up to the current row (the rest pale blue).
     auto img = a.create(image);
     img->step(nullptr);
     img->step(nullptr);
     cg::Scene s2;
     img->draw(s2);
-    REQUIRE(s2.grids.size() == 2);
-    CHECK(s2.grids[1].origin.x > 16);
+    CHECK_FALSE(s2.has_2d());
+    REQUIRE(s2.panels.size() == 2);
+    for (const auto& p : s2.panels) CHECK(p.kind == cg::PanelKind::Image);
+    const auto& g = s2.panels[0].grids.at(0);
+    CHECK(g.width == 16);
     int filled = 0;
-    for (auto v : s2.grids[0].rgba) filled += v != 0;
+    for (auto v : g.rgba) filled += v != 0xdde8f5ffu;
     CHECK(filled == 2 * 16);
 }
