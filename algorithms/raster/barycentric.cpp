@@ -652,6 +652,23 @@ void draw_3d(const State& s, Scene& scene) {
                                      {Role::Neutral, 1.0f, false, kInk[i]}});
         }
     const dvec3 centroid = (v[0] + v[1] + v[2]) / 3.0;
+    // Seen nearly face-on (orthographic, 25° off the triangle's normal, from the side the
+    // default camera is on), so the sub-triangles' areas compare as they are and a point's
+    // drop d onto the plane still shows; framed on the triangle and the points.
+    const dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+    if (glm::length(n) > 0) {
+        dvec3 u = glm::normalize(n);
+        if (glm::dot(u, dvec3(0.54, 0.34, 0.77)) < 0) u = -u;
+        dvec3 up = dvec3(0, 1, 0) - glm::dot(dvec3(0, 1, 0), u) * u;
+        if (glm::length(up) < 1e-6) up = dvec3(0, 0, -1) - glm::dot(dvec3(0, 0, -1), u) * u;
+        up = glm::normalize(up);
+        const dvec3 from = std::cos(0.44) * u - std::sin(0.44) * up;  // 25° below the normal
+        scene.view3 = {-from, up, true};
+    }
+    dvec3 lo = v[0], hi = v[0];
+    for (const dvec3& q : v) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    for (const dvec3& q : in.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    add_focus(scene, lo, hi);
     if (s.phase != Phase::Area) {
         double size = 0;
         for (int i = 0; i < 3; ++i) size = std::max(size, glm::length(v[i] - centroid));
@@ -659,7 +676,9 @@ void draw_3d(const State& s, Scene& scene) {
                                    centroid + 0.5 * size * s.unit_normal,
                                    "N = n/|n|",
                                    {Role::Construction, 2.0f},
-                                   true});
+                                   true,
+                                   0,
+                                   -1});
         if (!areas)
             scene.labels3.push_back({centroid, "area = " + num(s.area, 4), {Role::Neutral}});
     }
@@ -677,13 +696,14 @@ void draw_3d(const State& s, Scene& scene) {
             role = Role::Active;
         }
         scene.points3.push_back({p, label, {role}, current ? 6.0f : 4.0f});
-        if (current && s.cur.distance != 0) {
+        // (A drop of rounding noise, d printed as 0, is no drop.)
+        if (current && std::fabs(s.cur.distance) > 1e-12 * std::max(1.0, glm::length(hi - lo))) {
             scene.segments3.push_back({p,
                                        s.cur.projected,
                                        "d = " + num(s.cur.distance, 4),
                                        {Role::Construction, 1.5f, true},
                                        false});
-            scene.points3.push_back({s.cur.projected, "P′", {Role::Active}, 5.0f});
+            scene.points3.push_back({s.cur.projected, "P′", {Role::Active}, 5.0f, 1});
         }
     }
 }
