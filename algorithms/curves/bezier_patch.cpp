@@ -518,9 +518,9 @@ void BezierPatch::draw(const State& s, Scene& scene) {
                 scene.segments3.push_back({grid[i][j], grid[i][j + 1], "", net, false});
             if (i + 1 < grid.size())
                 scene.segments3.push_back({grid[i][j], grid[i + 1][j], "", net, false});
-            scene.points3.push_back(
+            scene.points3.push_back(  // named, but the step's subject is placed first
                 {grid[i][j],
-                 small ? name("P", static_cast<int>(i), static_cast<int>(j)) : "", net, 4.0f});
+                 small ? name("P", static_cast<int>(i), static_cast<int>(j)) : "", net, 4.0f, -1});
         }
 
     // The column just done: its curve in s and its de Casteljau construction.
@@ -556,20 +556,22 @@ void BezierPatch::draw(const State& s, Scene& scene) {
                 scene.labels3.push_back({s.point, what + " = 0", {role}});
                 return;
             }
-            scene.segments3.push_back({s.point, s.point + d / static_cast<double>(degree),
-                                       what + " / " + std::to_string(degree), {role, 3.0f}, true});
+            Segment3 tangent{s.point, s.point + d / static_cast<double>(degree),
+                             what + " / " + std::to_string(degree), {role, 3.0f}, true};
+            tangent.min_pixels = 30;
+            scene.segments3.push_back(tangent);
         };
         arrow(s.ds, s.m, "∂P/∂s", Role::Active);
         arrow(s.dt, s.n, "∂P/∂t", Role::Leaving);
     }
     if (s.phase == Phase::Tessellate || finished) {
         if (s.normal_defined)
-            scene.segments3.push_back(
-                {s.point, s.point + 0.25 * size * s.normal, "N", {Role::Window, 3.0f}, true});
+            scene.segments3.push_back({s.point, s.point + 0.25 * size * s.normal, "N",
+                                       {Role::Window, 3.0f}, true, 30, 1});
         else
             scene.labels3.push_back({s.point, "normal undefined here", {Role::Discarded}});
     }
-    scene.points3.push_back({s.point, at, {Role::Kept}, 6.5f});
+    scene.points3.push_back({s.point, at, {Role::Kept}, 6.5f, 1});
 }
 
 }  // namespace cg
