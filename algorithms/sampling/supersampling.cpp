@@ -1,5 +1,6 @@
-// Sections: [helpers] [spec] [validate] [advance] [narrate] [result and supersample] [draw]
-// [study] (the convergence study: its experiment, validation, steps and plot)
+// Sections: [helpers] [spec] [validate] [advance] [narrate] [result and supersample] [study]
+// (the convergence study: its experiment, validation and steps); the pictures are in
+// supersampling_draw.cpp.
 #include "sampling/supersampling.hpp"
 
 #include <algorithm>
@@ -51,7 +52,8 @@ bool segments_meet(dvec2 a, dvec2 b, dvec2 c, dvec2 d) {
 }
 
 void check_coordinate(double v, const std::string& field) {
-    if (!std::isfinite(v)) throw InputError(field, "must be a finite number (got " + given(v) + ")");
+    if (!std::isfinite(v))
+        throw InputError(field, "must be a finite number (got " + given(v) + ")");
     if (std::fabs(v) > Supersampling::kMaxCoordinate)
         throw InputError(field, "must be within ±10⁶ pixels (got " + given(v) + ")");
 }
@@ -98,23 +100,27 @@ const Spec& Supersampling::spec() {
         },
         {},  // no sliders
         {
-            .predict = {
-                {"inside", {}},
-                {"outside", {}},
-                {"estimate", {"estimate"}},
-                {"exact", {"error"}},
-            },
-            .mistakes = {
-                {"inside", "sum_wv", "keep", "forgot to add the covered sample's weight"},
-                {"inside", "sum_w", "keep", "forgot to add w_k to the weight sum"},
-                {"outside", "", "event:inside", "counted a sample outside the shape as covered"},
-            },
-            .variants = {
-                {"regular", "/pattern", "\"regular\""},
-                {"random", "/pattern", "\"random\""},
-                {"jittered", "/pattern", "\"jittered\""},
-                {"poisson", "/pattern", "\"poisson\""},
-            },
+            .predict =
+                {
+                    {"inside", {}},
+                    {"outside", {}},
+                    {"estimate", {"estimate"}},
+                    {"exact", {"error"}},
+                },
+            .mistakes =
+                {
+                    {"inside", "sum_wv", "keep", "forgot to add the covered sample's weight"},
+                    {"inside", "sum_w", "keep", "forgot to add w_k to the weight sum"},
+                    {"outside", "", "event:inside",
+                     "counted a sample outside the shape as covered"},
+                },
+            .variants =
+                {
+                    {"regular", "/pattern", "\"regular\""},
+                    {"random", "/pattern", "\"random\""},
+                    {"jittered", "/pattern", "\"jittered\""},
+                    {"poisson", "/pattern", "\"poisson\""},
+                },
         },
     };
     return spec;
@@ -492,92 +498,6 @@ Supersampling::Result Supersampling::supersample(const Input& in) {
     return r;
 }
 
-// ---- [draw] ---------------------------------------------------------------------------------
-
-// The pixel (blue) among its eight neighbours (grid lines), the scene (the edge's half-plane
-// with the outside shaded, or the polygon), the pattern's cells, and the samples: grey before
-// they are taken, then green inside and red outside, sized by weight; the current one orange
-// with, for Poisson, its exclusion circle. From the exact step on, the covered polygon (green).
-void Supersampling::draw(const State& s, Scene& scene) {
-    const Input& in = *s.in;
-    if (in.is_study) return draw_study(s, scene);
-    const double x0 = in.i, y0 = in.j;
-    const Style grid{Role::Construction, 1.0f, false};
-    for (int k = -1; k <= 2; ++k) {
-        scene.segments.push_back({{x0 + k, y0 - 1}, {x0 + k, y0 + 2}, "", grid, false});
-        scene.segments.push_back({{x0 - 1, y0 + k}, {x0 + 2, y0 + k}, "", grid, false});
-    }
-    scene.polygons.push_back({{{x0, y0}, {x0 + 1, y0}, {x0 + 1, y0 + 1}, {x0, y0 + 1}},
-                              {Role::Window, 2.5f},
-                              true,
-                              false});
-    scene.points.push_back({{x0 + 0.5, y0 + 0.5}, "", {Role::Window}, 2.5f});
-    scene.labels.push_back({{x0 + 0.02, y0 - 0.12},
-                            "pixel (" + std::to_string(in.i) + ", " + std::to_string(in.j) + ")",
-                            {Role::Window}});
-
-    const sampling::Region& r = in.scene;
-    if (r.kind == RegionKind::Edge) {
-        const dvec2 d = sampling::edge_direction(r.angle_deg);
-        // The line's point nearest the pixel's centre: where the handle sits.
-        const dvec2 c(x0 + 0.5, y0 + 0.5);
-        const dvec2 foot = r.point + d * glm::dot(c - r.point, d);
-        scene.half_planes.push_back({foot, {-d.y, d.x}, "edge", {Role::Subject, 2.0f}});
-        scene.handles.push_back({foot, "edge", "/scene/point/0", "/scene/point/1"});
-    } else {
-        scene.polygons.push_back({r.points, {Role::Subject, 2.0f}, true, true});
-        for (std::size_t k = 0; k < r.points.size(); ++k) {
-            const std::string p = "/scene/points/" + std::to_string(k);
-            scene.handles.push_back({r.points[k], "P" + std::to_string(k), p + "/0", p + "/1"});
-        }
-    }
-
-    if (sampling::is_grid(in.pattern)) {
-        const int n = sampling::grid_side(in.samples);
-        if (n > 1 && n <= 16)
-            for (int k = 1; k < n; ++k) {
-                const double t = double(k) / n;
-                const Style cells{Role::Construction, 1.0f, true};
-                scene.segments.push_back({{x0 + t, y0}, {x0 + t, y0 + 1}, "", cells, false});
-                scene.segments.push_back({{x0, y0 + t}, {x0 + 1, y0 + t}, "", cells, false});
-            }
-    }
-
-    if (s.phase >= Phase::Done && !s.covered.empty())
-        scene.polygons.push_back({s.covered, {Role::Kept, 2.0f}, true, true});
-
-    const bool many = s.points.size() > 64;
-    double wmax = 0;
-    for (const auto& smp : s.samples) wmax = std::max(wmax, smp.weight);
-    for (std::size_t k = 0; k < s.points.size(); ++k) {
-        const dvec2 p = dvec2(x0, y0) + s.points[k].p;
-        if (int(k) > s.k) {
-            scene.points.push_back({p, "", {Role::Subject}, many ? 2.0f : 3.0f});
-            continue;
-        }
-        const Sample& smp = s.samples[k];
-        const bool current = int(k) == s.k && s.last == Phase::Sample;
-        const float radius = (many ? 2.0f : 3.0f) +
-                             (many ? 2.0f : 4.0f) * float(smp.weight / std::max(wmax, 1e-300));
-        const Role role = current ? Role::Active : smp.value > 0 ? Role::Kept : Role::Discarded;
-        scene.points.push_back({p, current ? std::to_string(k + 1) : "", {role}, radius});
-    }
-    if (s.last == Phase::Sample && in.pattern == Pattern::Poisson) {  // the exclusion circle
-        const dvec2 c = s.samples[s.k].p;
-        std::vector<dvec2> circle;
-        for (int a = 0; a < 48; ++a)
-            circle.push_back(c +
-                             s.radius * dvec2(std::cos(a * M_PI / 24), std::sin(a * M_PI / 24)));
-        scene.polygons.push_back({std::move(circle), {Role::Active, 1.0f, true}, true, false});
-    }
-    if (s.phase >= Phase::Exact) {
-        std::string t = "estimate " + num(s.estimate, 4);
-        if (s.phase == Phase::Done)
-            t += ", exact " + num(s.exact, 4) + ", error " + num(s.estimate - s.exact, 3);
-        scene.labels.push_back({{x0 + 0.02, y0 + 1.06}, t, {Role::Neutral}});
-    }
-}
-
 // ---- [study] --------------------------------------------------------------------------------
 
 Supersampling::Input Supersampling::study_trial(const Input& in, Pattern pattern, int samples,
@@ -763,107 +683,6 @@ void Supersampling::narrate_study(const State& s, StepInfo& info) {
     t.back() = '.';
     info.narration = t;
     info.math = "e \\propto N^{s}:\\; s = \\frac{\\Delta \\log e}{\\Delta \\log N}";
-}
-
-namespace {
-
-Role pattern_role(Pattern p) {
-    switch (p) {
-        case Pattern::Regular:
-            return Role::Discarded;
-        case Pattern::Random:
-            return Role::Leaving;
-        case Pattern::Jittered:
-            return Role::Kept;
-        case Pattern::Poisson:
-            return Role::Window;
-    }
-    return Role::Neutral;
-}
-
-std::string error_tick(int decade) {
-    switch (decade) {
-        case 0:
-            return "1";
-        case -1:
-            return "0.1";
-        case -2:
-            return "0.01";
-        case -3:
-            return "0.001";
-        default:
-            return "1e" + std::to_string(decade);
-    }
-}
-
-}  // namespace
-
-// The log-log plot: x = log10 N over the counts studied, y = log10 RMS error from 1 down to
-// 0.001 (further if the errors go lower), kW × kH world units. Axes with the counts and the
-// decades as ticks; guide lines of slope −½ and −¾ from 1 at the first N; each pattern's
-// points so far joined by a polyline in its colour, named at its end; the newest point larger,
-// with its value. (The slopes are in the last step's narration and variables.)
-void Supersampling::draw_study(const State& s, Scene& scene) {
-    constexpr double kW = 4.0, kH = 3.0;
-    const Study& st = s.in->study;
-    const double lx0 = std::log10(double(st.samples.front()));
-    const double lx1 = std::log10(double(st.samples.back()));
-    double ly0 = -3;
-    for (const StudyPoint& q : s.study)
-        ly0 = std::min(ly0, std::floor(std::log10(std::max(q.rms_error, 1e-6))));
-    const double ly1 = 0;
-    auto at = [&](double n, double e) {
-        return dvec2(kW * (std::log10(n) - lx0) / (lx1 - lx0),
-                     kH * (std::log10(std::max(e, 1e-6)) - ly0) / (ly1 - ly0));
-    };
-
-    const Style axis{Role::Neutral, 1.5f};
-    const Style grid{Role::Construction, 1.0f, true};
-    scene.segments.push_back({{0, 0}, {kW, 0}, "", axis, false});
-    scene.segments.push_back({{0, 0}, {0, kH}, "", axis, false});
-    for (int n : st.samples) {
-        const double x = at(n, 1).x;
-        scene.segments.push_back({{x, 0}, {x, -0.06}, "", axis, false});
-        scene.labels.push_back({{x, -0.2}, std::to_string(n), {Role::Neutral}});
-    }
-    for (int d = int(ly0); d <= 0; ++d) {
-        const double y = at(1, std::pow(10.0, d)).y;
-        scene.segments.push_back({{-0.06, y}, {0, y}, "", axis, false});
-        if (d < 0) scene.segments.push_back({{0, y}, {kW, y}, "", grid, false});
-        scene.labels.push_back({{-0.3, y}, error_tick(d), {Role::Neutral}});
-    }
-    scene.labels.push_back({{kW / 2, -0.7}, "samples per pixel N (log scale)", {Role::Neutral}});
-    scene.labels.push_back({{0.9, kH + 0.25},
-                            "RMS error over " + std::to_string(st.edges) + " edges " +
-                                angles_text(st) + " (log scale)",
-                            {Role::Neutral}});
-
-    // Guides: slopes −½ and −¾ from error 1 at the first count, above the data (every pattern
-    // starts below 1), so a pattern's line running parallel to a guide has its slope.
-    const double n0 = st.samples.front(), n1 = st.samples.back();
-    for (const auto& [power, name] : {std::pair{0.5, "slope −½"}, std::pair{0.75, "slope −¾"}}) {
-        const dvec2 a = at(n0, 1.0), b = at(n1, std::pow(n1 / n0, -power));
-        scene.segments.push_back({a, b, "", {Role::Construction, 1.5f, true}, false});
-        const double along = power < 0.6 ? 0.6 : 0.3;  // apart, where the guides diverge
-        scene.labels.push_back({a + (b - a) * along + dvec2(0, 0.15), name, {Role::Neutral}});
-    }
-
-    const std::size_t m = st.samples.size();
-    for (std::size_t a = 0; a * m < s.study.size(); ++a) {
-        const std::size_t first = a * m, last = std::min(s.study.size(), first + m);
-        const Pattern p = s.study[first].pattern;
-        const Style style{pattern_role(p), 2.5f};
-        std::vector<dvec2> line;
-        for (std::size_t k = first; k < last; ++k) {
-            const StudyPoint& q = s.study[k];
-            line.push_back(at(q.samples, q.rms_error));
-            const bool newest = k + 1 == s.study.size() && s.last == Phase::Point;
-            scene.points.push_back(
-                {line.back(), newest ? num(q.rms_error, 3) : "", style, newest ? 6.0f : 4.0f});
-        }
-        if (line.size() > 1) scene.polygons.push_back({line, style, false, false});
-        scene.labels.push_back({line.back() + dvec2(0.12, 0), sampling::pattern_id(p), style});
-    }
 }
 
 }  // namespace cg

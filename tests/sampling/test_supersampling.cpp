@@ -667,24 +667,34 @@ TEST_CASE("supersampling: a study replays, and its picture is the log-log plot",
 
     const cg::json in = cg::parse_json(R"({"study": {"edges": 20}})");
     auto run = a.create(in);
-    auto count = [](const cg::Scene& sc, cg::Role role) {
+    // The plot is a chart with logarithmic axes in its own units (N, RMS error), not drawn on the
+    // world's grid.
+    auto chart_of = [](const cg::Scene& sc) -> const cg::Panel& {
+        CHECK_FALSE(sc.has_2d());
+        REQUIRE(sc.panels.size() == 1);
+        return sc.panels[0];
+    };
+    auto count = [](const cg::Panel& c, cg::Role role) {
         int n = 0;
-        for (const auto& p : sc.points) n += p.style.role == role;
+        for (const auto& p : c.points) n += p.style.role == role;
         return n;
     };
-    auto has_label = [](const cg::Scene& sc, const std::string& text) {
-        for (const auto& l : sc.labels)
+    auto in_legend = [](const cg::Panel& c, const std::string& text) {
+        for (const auto& l : c.legend)
             if (l.text == text) return true;
         return false;
     };
-    {  // before any step: the axes, ticks and guides, no data
+    {  // before any step: the axes and the guides, no data
         cg::Scene sc;
         run->draw(sc);
-        CHECK(sc.points.empty());
-        CHECK(has_label(sc, "slope −½"));
-        CHECK(has_label(sc, "slope −¾"));
-        for (const char* t : {"1", "4", "16", "64", "256", "0.001", "0.01", "0.1"})
-            CHECK(has_label(sc, t));
+        const cg::Panel& c = chart_of(sc);
+        CHECK(c.kind == cg::PanelKind::Chart);
+        CHECK(c.x.log);
+        CHECK(c.y.log);
+        CHECK(c.x.label == "samples per pixel N");
+        CHECK(c.points.empty());
+        CHECK(in_legend(c, "slope −½"));
+        CHECK(in_legend(c, "slope −¾"));
     }
     // The points appear as the steps reach them: regular (red) first, then random (magenta).
     for (int k = 1; k <= 7; ++k) {
@@ -693,26 +703,25 @@ TEST_CASE("supersampling: a study replays, and its picture is the log-log plot",
         CHECK(info.event == "point");
         cg::Scene sc;
         run->draw(sc);
-        CHECK(count(sc, cg::Role::Discarded) == std::min(k, 5));
-        CHECK(count(sc, cg::Role::Leaving) == std::max(0, k - 5));
+        const cg::Panel& c = chart_of(sc);
+        CHECK(count(c, cg::Role::Discarded) == std::min(k, 5));
+        CHECK(count(c, cg::Role::Leaving) == std::max(0, k - 5));
     }
     while (!run->done()) run->step(nullptr);
     cg::Scene sc;
     run->draw(sc);
-    CHECK(sc.points.size() == 20);
+    const cg::Panel& c = chart_of(sc);
+    CHECK(c.points.size() == 20);
     int lines = 0;
-    for (const auto& p : sc.polygons) lines += !p.closed && p.points.size() == 5;
+    for (const auto& p : c.polygons) lines += !p.closed && p.points.size() == 5;
     CHECK(lines == 4);
-    for (const char* name : {"regular", "random", "jittered", "poisson"})
-        CHECK(has_label(sc, name));
-    // Every point sits at (log N, log error) in the plot's frame, in order along x.
+    for (const char* name : {"regular", "random", "jittered", "poisson"}) CHECK(in_legend(c, name));
+    // Every point sits at (N, error) in the chart's own units, in order along N.
     const auto r = a.result(*run);
     REQUIRE(r["study"].size() == 20);
     CHECK(r["slopes"].size() == 4);
-    for (std::size_t k = 0; k + 1 < 20; ++k)
-        if (k % 5 != 4) CHECK(sc.points[k].p.x < sc.points[k + 1].p.x);
-    for (const auto& p : sc.points) {
-        CHECK(std::isfinite(p.p.x));
-        CHECK(std::isfinite(p.p.y));
+    for (std::size_t k = 0; k < 20; ++k) {
+        CHECK(c.points[k].p.x == r["study"][k]["samples"].get<double>());
+        CHECK(c.points[k].p.y == Approx(std::max(r["study"][k]["rms_error"].get<double>(), 1e-6)));
     }
 }
