@@ -3,8 +3,9 @@
 // slab's entry and exit on it (teal "near", magenta "far"), the running [t_min, t_max] (orange;
 // green and thick in the box once it is a hit), framed on the box, E and the ray across it.
 // Beside it, a chart on the t axis: one row per slab worked with its interval [t_near, t_far]
-// and its numbers, and the running overlap [t_min, t_max] below them (t = 0 dashed), so an
-// empty overlap — a miss — is seen as two bars that do not meet.
+// and its numbers, and the running overlap [t_min, t_max] below them (t = 0 dashed), the rows
+// named on the y axis and the one in hand on a pale orange band, so an empty overlap — a miss —
+// is seen as two bars that do not meet.
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
@@ -171,17 +172,23 @@ void RayAabb::draw(const State& s, Scene& scene) {
     for (int i = 0; i < r.count; ++i) frame(r.axes[i].t_near), frame(r.axes[i].t_far);
     if (finite(flo) && finite(fhi)) add_focus(scene, flo, fhi);
 
-    // ---- the chart: the t axis, one row per slab worked (x, y, z at 3, 2, 1) and the running
-    // interval [t_min, t_max] at 0; infinite ends run to the edge with an arrow ----
+    // ---- the chart: the t axis, one row per slab (x, y, z at 3, 2, 1, named on the y axis) and
+    // the running interval [t_min, t_max] at 0; infinite ends run to the edge with an arrow ----
     const double lo = range.lo, hi = range.hi, w = hi - lo;
     if (!(w > 0) || !std::isfinite(w)) return;
-    Panel& chart =
-        add_chart(scene, "slab intervals on the t axis", Axis{"t", lo, hi}, Axis{"", -0.6, 3.7});
+    Axis rows{""};
+    rows.names = {"[t_min, t_max]", "z slab", "y slab", "x slab"};
+    for (int i = 0; i < r.count; ++i)
+        if (r.axes[i].kind == Case::ParallelOutside) rows.names[3 - i] += " (empty)";
+    Panel& chart = add_chart(scene, "slab intervals on the t axis", Axis{"t", lo, hi}, rows);
     chart.weight = 1.1;
-    auto row = [&](double y, double a, double b, const std::string& name, Role role, bool active) {
-        push2(
-            chart,
-            Label2{{lo, y + 0.3}, name, {active ? Role::Active : Role::Neutral}, active ? 20 : 5});
+    auto row = [&](double y, double a, double b, Role role, bool active) {
+        if (active)  // the row in hand: a pale orange band, like the slab's planes in 3D
+            chart.polygons.push_back(
+                {{{lo, y - 0.38}, {hi, y - 0.38}, {hi, y + 0.38}, {lo, y + 0.38}},
+                 {Role::Active, 0.0f},
+                 true,
+                 true});
         if (!(a <= b)) return;  // empty
         const double ca = std::max(a, lo), cb = std::min(b, hi);
         if (ca > cb) return;
@@ -189,19 +196,16 @@ void RayAabb::draw(const State& s, Scene& scene) {
         push2(chart, Segment2{{ca, y}, {cb, y}, "", bar, std::isinf(b)});
         if (std::isinf(a))  // −∞: an arrowhead at the left edge too
             push2(chart, Segment2{{0.5 * (ca + cb), y}, {ca, y}, "", bar, true});
-        if (std::isfinite(a)) push2(chart, Label2{{ca, y - 0.3}, num(a, 4), {Role::Entering}});
-        if (std::isfinite(b)) push2(chart, Label2{{cb, y - 0.3}, num(b, 4), {Role::Leaving}});
+        if (std::isfinite(a)) push2(chart, Label2{{ca, y - 0.06}, num(a, 4), {Role::Entering}});
+        if (std::isfinite(b)) push2(chart, Label2{{cb, y - 0.06}, num(b, 4), {Role::Leaving}});
     };
     for (int i = 0; i < r.count; ++i) {
         const Slab& sl = r.axes[i];
-        const std::string name =
-            std::string(kAxis[i]) + " slab" + (sl.kind == Case::ParallelOutside ? " (empty)" : "");
-        row(3 - i, sl.t_near, sl.t_far, name, Role::Window, i == focus && axis_step);
+        row(3 - i, sl.t_near, sl.t_far, Role::Window, i == focus && axis_step);
     }
     const bool hit = r.verdict == Verdict::Hit || r.verdict == Verdict::Inside;
-    if (r.count > 0)
-        row(0, r.t_min, r.t_max, "[t_min, t_max]", hit ? Role::Kept : Role::Active, !axis_step);
-    push2(chart, Segment2{{0, -0.6}, {0, 3.7}, "", {Role::Construction, 1.0f, true}, false});
+    if (r.count > 0) row(0, r.t_min, r.t_max, hit ? Role::Kept : Role::Active, !axis_step);
+    push2(chart, Segment2{{0, -0.5}, {0, 3.5}, "", {Role::Construction, 1.0f, true}, false});
 }
 
 }  // namespace cg

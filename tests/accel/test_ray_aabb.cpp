@@ -573,6 +573,9 @@ TEST_CASE(
     const cg::Panel& chart = scene.panels[0];
     CHECK(chart.kind == cg::PanelKind::Chart);
     CHECK(chart.x.label == "t");
+    // The rows are named on the y axis (x at the top, the overlap at the bottom), not numbered.
+    CHECK(chart.y.names ==
+          std::vector<std::string>{"[t_min, t_max]", "z slab", "y slab", "x slab"});
     bool overlap = false;
     int bars = 0;
     for (const auto& g : chart.segments) {
