@@ -889,7 +889,7 @@ TEST_CASE("ray-tracer: the picture shows the image, the scene and the ray tree",
     CHECK(steps >= 6);
 }
 
-TEST_CASE("ray-tracer: rows show the rays each row cost; a distributed pixel shows its samples",
+TEST_CASE("ray-tracer: rows show the rays each row cost, a distributed pixel its samples",
           "[rays][ray-tracer]") {
     cg::json in = tracer().example();
     in["stepping"] = {{"granularity", "rows"}};
