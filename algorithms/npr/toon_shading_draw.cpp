@@ -82,8 +82,10 @@ void ToonShading::draw(const State& s, Scene& scene) {
     // The rule as a chart: band against u = d, the texture's cells as a staircase.
     const auto& t = in.thresholds;
     const int bands = static_cast<int>(t.size()) + 1;
+    Axis band_axis{"band", -0.6, bands - 0.4};
+    band_axis.step = 1;  // whole bands: 0, 1, 2, …
     Panel& chart = add_chart(scene, "the 1D texture: band against u",
-                             Axis{"u = d = max(0, N̂·L̂)", 0, 1}, Axis{"band", -0.6, bands - 0.4});
+                             Axis{"u = d = max(0, N̂·L̂)", 0, 1}, band_axis);
     for (int b = 0; b < bands; ++b) {
         const double u0 = b == 0 ? 0 : t[static_cast<std::size_t>(b - 1)];
         const double u1 = b == bands - 1 ? 1 : t[static_cast<std::size_t>(b)];

@@ -324,6 +324,7 @@ TEST_CASE("toon-shading: the picture — the face with N̂ and L̂ framed, the r
     REQUIRE(pic.panels.size() == 1);
     const cg::Panel& chart = pic.panels[0];
     CHECK(chart.kind == cg::PanelKind::Chart);
+    CHECK(chart.y.step == 1);  // whole bands on the y axis, not 0.2 steps
     CHECK(chart.polygons.size() == 2);
     REQUIRE(chart.points.size() == 1);
     CHECK(chart.points[0].p == glm::dvec2(1, 1));  // d = 1, band 1
