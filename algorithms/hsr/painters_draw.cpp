@@ -3,8 +3,8 @@
 // with handles), and while ordering the pieces of the list — P, the list's far end, orange; the Q
 // it is tested against teal; pieces just made by a split orange — with the pair's verdict under
 // the buffer. Beside it a chart of the list itself: one bar per piece spanning its z extent,
-// in drawing order left to right (settled pieces first, drawn ones green, then the list still
-// to settle, a dashed line between), so that which z extents overlap, and why P may or may not
+// in drawing order left to right, the x axis naming the places 1st, 2nd, … (settled pieces
+// first, drawn ones green, then the list still to settle, a dashed line between), so that which z extents overlap, and why P may or may not
 // be drawn before Q, reads off the bars.
 #include <algorithm>
 #include <cmath>
@@ -25,6 +25,17 @@ std::vector<dvec2> outline_of(const Piece& p) {
     std::vector<dvec2> o;
     for (const auto& v : p.vertices) o.emplace_back(v.x, v.y);
     return o;
+}
+
+// 1st, 2nd, 3rd, 4th, …, 11th, 12th, 13th, …, 21st.
+std::string ordinal(std::size_t k) {
+    const std::size_t ten = k % 10, hundred = k % 100;
+    const char* suffix = hundred >= 11 && hundred <= 13 ? "th"
+                         : ten == 1                     ? "st"
+                         : ten == 2                     ? "nd"
+                         : ten == 3                     ? "rd"
+                                                        : "th";
+    return std::to_string(k) + suffix;
 }
 
 // A piece's bar in the chart at x: its z extent, with the name over it.
@@ -139,12 +150,16 @@ void Painters::draw(const State& s, Scene& scene) {
          std::initializer_list<const std::vector<Piece>*>{&input, &s.settled, &s.list})
         for (const Piece& p : *v) zlo = std::min(zlo, p.lo.z), zhi = std::max(zhi, p.hi.z);
     const double span = std::max(zhi - zlo, 1e-9);
+    // The x axis is a category axis: the k-th bar is the (k+1)-th drawn (or, before the sort,
+    // the (k+1)-th of the input).
+    Axis order{input.empty() ? "drawing order" : "input order"};
+    for (std::size_t k = 1; k <= n; ++k) order.names.push_back(ordinal(k));
     Panel& chart = add_chart(scene,
                              input.empty() ? "the list: z extents in drawing order"
                                            : "z extents, not yet sorted",
-                             Axis{"drawn 1st, 2nd, …", 0.4, double(n) + 0.6},
+                             order,
                              Axis{"z (far ↑)", zlo - 0.12 * span, zhi + 0.18 * span});
-    double x = 1;
+    double x = 0;
     for (const Piece& p : input) bar(chart, p, x++, span, Role::Subject, p.name, 0);
     for (std::size_t k = 0; k < s.settled.size(); ++k) {
         const Piece& p = s.settled[k];

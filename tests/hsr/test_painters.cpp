@@ -302,8 +302,12 @@ TEST_CASE("painters: the picture — the list as a chart of z extents in drawing
     REQUIRE(pic.panels.size() == 1);
     const cg::Panel& chart = pic.panels[0];
     REQUIRE(chart.polygons.size() == r.order.size());
-    // Drawn back to front: the first bar is P0's z extent [5, 5], drawn (green).
+    // The x axis names the places in the drawing order, the k-th bar at k.
+    CHECK(chart.x.names == std::vector<std::string>{"1st", "2nd"});
+    // Drawn back to front: the first bar is P0's z extent [5, 5], drawn (green), at "1st".
     CHECK(chart.polygons[0].style.role == cg::Role::Kept);
+    CHECK(chart.polygons[0].points[0].x < 0);
+    CHECK(chart.polygons[0].points[1].x > 0);
     CHECK(chart.polygons[0].points[0].y == 5);
     REQUIRE_FALSE(chart.labels.empty());
     CHECK(chart.labels[0].text == "P0");
