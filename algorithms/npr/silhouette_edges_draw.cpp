@@ -32,7 +32,11 @@ void SilhouetteEdges::draw(const State& s, Scene& scene) {
     const glm::dvec3 l = unit(in.light);
     const int classified = static_cast<int>(s.r.front.size());
     const bool small = m.faces.size() <= 24;
-    const auto [mid, size] = npr::bounds(m);
+    // (Not a structured binding: clang, which builds the browser's copy, will not let the
+    // lambdas below capture one.)
+    const std::pair<glm::dvec3, double> extent = npr::bounds(m);
+    const glm::dvec3 mid = extent.first;
+    const double size = extent.second;
     auto P = [&](int i) { return m.vertices[static_cast<std::size_t>(i)]; };
     auto face_points = [&](int k) {
         std::vector<glm::dvec3> out;
