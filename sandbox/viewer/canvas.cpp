@@ -44,7 +44,10 @@ Box bounds_of(const Layer2& layer) {
 }
 
 View2 fit_view(const Layer2& layer, glm::dvec2 size, double margin) {
-    const Box b = bounds_of(layer);
+    return fit_box(bounds_of(layer), size, margin);
+}
+
+View2 fit_box(const Box& b, glm::dvec2 size, double margin) {
     if (b.min.x > b.max.x) return View2{};  // nothing bounded: the origin at the default zoom
     const double inf = std::numeric_limits<double>::infinity();
     const glm::dvec2 room{std::max(size.x - 2 * margin, 40.0), std::max(size.y - 2 * margin, 40.0)};
@@ -247,7 +250,19 @@ ScreenMap draw_world(Session& s, const Box& box, bool interactive, Recording rec
     const glm::dvec2 size = box.max - box.min;
     if (s.canvas.fit_pending || s.canvas.fitted_world != size) {
         const double sliders = sliders_height(s);
-        s.canvas.view = fit_view(s.scene(), glm::max(size - glm::dvec2(0, sliders), glm::dvec2(1)));
+        // Framed on the step's subject when it marks one in the world, else on everything.
+        const Scene& scene = s.scene();
+        Box subject = bounds_of(scene);
+        if (std::any_of(scene.focus2.begin(), scene.focus2.end(),
+                        [](const Focus2& f) { return f.panel < 0; })) {
+            subject = {glm::dvec2(DBL_MAX), glm::dvec2(-DBL_MAX)};
+            for (const Focus2& f : scene.focus2)
+                if (f.panel < 0)
+                    subject.min = glm::min(subject.min, f.lo),
+                    subject.max = glm::max(subject.max, f.hi);
+        }
+        s.canvas.view =
+            fit_box(subject, glm::max(size - glm::dvec2(0, sliders), glm::dvec2(1)), 40);
         s.canvas.view.center.y -= sliders / 2 / s.canvas.view.zoom;
         s.canvas.fitted_world = size;
     }

@@ -11,6 +11,7 @@
 #include <string>
 #include <tuple>
 #include <unordered_map>
+#include <vector>
 
 #include "viewer/canvas_draw.hpp"
 #include "viewer/im_colour.hpp"
@@ -87,41 +88,51 @@ View3 fit_view3(const Scene& scene, glm::dvec2 size) {
                      ? default_rotation()
                      : look_rotation(scene.view3.look, scene.view3.up);
     v.orthographic = scene.view3.orthographic;
-    // What to frame: the focus elements when the step marks some; else the sphere of radius
-    // extent3 round the origin when the scene gives one; else everything.
-    const double inf = std::numeric_limits<double>::infinity();
-    glm::dvec3 lo(inf), hi(-inf);
+    // What to frame: the focus elements when the step marks some (each one's own corners, so a
+    // cube and an eye far off it are framed as they are, not as the box round both); else the
+    // cube of half-side extent3 round the origin when the scene gives one; else everything.
+    std::vector<glm::dvec3> points;
     auto add = [&](glm::dvec3 p) {
-        if (!finite(p)) return;
-        lo = glm::min(lo, p), hi = glm::max(hi, p);
+        if (finite(p)) points.push_back(p);
+    };
+    auto corners = [&](glm::dvec3 lo, glm::dvec3 hi) {
+        for (int i = 0; i < 8; ++i)
+            add({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
     };
     if (!scene.focus3.empty()) {
-        for (const Focus3& f : scene.focus3) add(f.lo), add(f.hi);
+        for (const Focus3& f : scene.focus3) corners(f.lo, f.hi);
     } else if (scene.extent3 > 0 && std::isfinite(scene.extent3)) {
-        add(glm::dvec3(-scene.extent3)), add(glm::dvec3(scene.extent3));
+        corners(glm::dvec3(-scene.extent3), glm::dvec3(scene.extent3));
     } else {
         for_each_point(scene, add);
     }
-    if (!(lo.x <= hi.x)) lo = glm::dvec3(-1), hi = glm::dvec3(1);
-    v.target = (lo + hi) / 2.0;
-    // The box's corners in view coordinates round the target must fit in 80% of the canvas's
-    // half-width and half-height (room for labels): for a pinhole at distance d, a corner c
-    // lands f·c.x / (d − c.z) from the centre, so d ≥ c.z + f·|c.x| / half_width.
+    if (points.empty()) corners(glm::dvec3(-1), glm::dvec3(1));
+    // The target is the middle of what is framed as the camera sees it (in view coordinates).
+    const double inf = std::numeric_limits<double>::infinity();
+    glm::dvec3 lo(inf), hi(-inf);
+    for (glm::dvec3 p : points) {
+        const glm::dvec3 q = v.rotation * p;
+        lo = glm::min(lo, q), hi = glm::max(hi, q);
+    }
+    if (glm::length(hi - lo) < 1e-9) lo -= glm::dvec3(0.5), hi += glm::dvec3(0.5);
+    v.target = glm::conjugate(v.rotation) * ((lo + hi) / 2.0);
+    // Every point, in view coordinates round the target, must land within 80% of the canvas's
+    // half-width and half-height (room for labels): for a pinhole at distance d, a point c lands
+    // f·c.x / (d − c.z) from the centre, so d ≥ c.z + f·|c.x| / half_width.
     const double focal = std::max(size.y, 1.0) / 2 / std::tan(glm::radians(v.fov_y_deg) / 2);
     const double hw = 0.80 * std::max(size.x, 1.0) / 2, hh = 0.80 * std::max(size.y, 1.0) / 2;
+    const glm::dvec3 middle = (lo + hi) / 2.0;
     double distance = 0, deepest = -inf;
-    glm::dvec3 half = (hi - lo) / 2.0;
-    if (glm::length(half) < 1e-9) half = glm::dvec3(0.5);
-    for (int i = 0; i < 8; ++i) {
-        const glm::dvec3 corner(i & 1 ? half.x : -half.x, i & 2 ? half.y : -half.y,
-                                i & 4 ? half.z : -half.z);
-        const glm::dvec3 c = v.rotation * corner;
+    auto fit = [&](glm::dvec3 c) {
         const double z = v.orthographic ? 0 : c.z;
         distance =
             std::max({distance, z + focal * std::fabs(c.x) / hw, z + focal * std::fabs(c.y) / hh});
         deepest = std::max(deepest, c.z);
-    }
-    // In perspective the camera stays outside the box, with room before the near plane.
+    };
+    for (glm::dvec3 p : points) fit(v.rotation * p - middle);
+    if (hi.x - lo.x < 1e-9 || hi.y - lo.y < 1e-9)  // a point or a line seen end-on: some room
+        fit(glm::dvec3(0.5 * std::max(glm::length(hi - lo), 1.0), 0, 0));
+    // In perspective the camera stays outside what it frames, with room before the near plane.
     if (!v.orthographic) distance = std::max(distance, 1.3 * deepest);
     v.distance = distance > 0 && std::isfinite(distance) ? distance : 10;
     return v;

@@ -52,8 +52,9 @@ double nice_step(double at_least);
 Box bounds_of(const Layer2& layer);
 
 // A view showing all of the layer's bounded geometry in a canvas of `size` pixels, with room
-// (`margin` pixels a side) for labels.
+// (`margin` pixels a side) for labels; fit_box, the box `bounds` (the world's focus elements).
 View2 fit_view(const Layer2& layer, glm::dvec2 size, double margin = 40);
+View2 fit_box(const Box& bounds, glm::dvec2 size, double margin = 40);
 
 // Grid lines every round step (at least ~70 px apart, with lighter subdivisions), the axes,
 // and tick labels kept inside the canvas when an axis is out of view.

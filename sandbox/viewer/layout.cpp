@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
+
+#include "viewer/canvas_draw.hpp"
 
 namespace cg::viewer {
 
@@ -72,22 +75,44 @@ double height(const Box& b) {
 // margins, pixels (as draw_panel and draw_image leave them).
 constexpr double kImageTitle = 30, kImageMarginX = 16, kImageMarginY = 12;
 
-// The raster's width over its height (1 for a panel without one).
-double image_aspect(const Panel& p) {
-    if (p.grids.empty() || p.grids.front().width <= 0 || p.grids.front().height <= 0) return 1;
-    return double(p.grids.front().width) / p.grids.front().height;
+// What a panel of fixed shape holds: its width and height in its own units, whether it is
+// drawn at whole screen pixels a unit, and the room its drawing keeps round it (pixels).
+struct Shape {
+    double w = 0, h = 0;
+    bool whole_pixels = false;
+    double margin_x = 0, margin_y = 0;
+};
+
+// An image's raster (cells, drawn pixel-exact: draw_image), a diagram's drawing (its bounds,
+// fitted with 16 px round it: draw_diagram); none for a chart, or an empty diagram.
+std::optional<Shape> shape_of(const Panel& p) {
+    if (p.kind == PanelKind::Image && !p.grids.empty() && p.grids.front().width > 0 &&
+        p.grids.front().height > 0)
+        return Shape{double(p.grids.front().width), double(p.grids.front().height), true,
+                     kImageMarginX, kImageMarginY};
+    if (p.kind == PanelKind::Diagram) {
+        const Box b = bounds_of(p);
+        if (!(b.max.x - b.min.x > 0) || !(b.max.y - b.min.y > 0)) return std::nullopt;
+        return Shape{b.max.x - b.min.x, b.max.y - b.min.y, false, 8 + 32, 4 + 32};
+    }
+    return std::nullopt;
 }
 
-// An image panel's box shrunk to its raster's shape (title above, margins round), centred
-// across and at the top: the panel is the picture, not the picture and a strip of nothing.
-Box tight_image_box(const Box& box, const Panel& p, double header) {
-    const double cells_w = p.grids.empty() ? 1 : std::max(p.grids.front().width, 1);
-    const double cells_h = p.grids.empty() ? 1 : std::max(p.grids.front().height, 1);
-    const double room_w = std::max(width(box) - kImageMarginX, 1.0);
-    const double room_h = std::max(height(box) - header - kImageMarginY, 1.0);
-    const double zoom = image_zoom(room_w / cells_w, room_h / cells_h);
-    const double bw = std::ceil(cells_w * zoom + kImageMarginX);
-    const double bh = std::ceil(cells_h * zoom + header + kImageMarginY);
+// The width over the height of what a fixed-shape panel holds.
+double aspect_of(const Shape& s) {
+    return s.w / s.h;
+}
+
+// A fixed-shape panel's box shrunk to its contents' shape (title above, margins round),
+// centred across and at the top: the panel is the picture, not the picture and a strip of
+// nothing.
+Box tight_box(const Box& box, const Shape& s, double header) {
+    const double room_w = std::max(width(box) - s.margin_x, 1.0);
+    const double room_h = std::max(height(box) - header - s.margin_y, 1.0);
+    const double zoom = s.whole_pixels ? image_zoom(room_w / s.w, room_h / s.h)
+                                       : std::min(room_w / s.w, room_h / s.h);
+    const double bw = std::ceil(s.w * zoom + s.margin_x);
+    const double bh = std::ceil(s.h * zoom + header + s.margin_y);
     const double x0 = std::round(box.min.x + (width(box) - bw) / 2);
     return {{x0, box.min.y}, {x0 + bw, box.min.y + bh}};
 }
@@ -104,15 +129,17 @@ std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double g
         return header_of ? header_of(p, w) : kImageTitle;
     };
     auto tighten = [&](std::vector<ViewSlot>& views) {
-        for (ViewSlot& v : views)
-            if (v.kind == ViewKind::Image) {
-                const Panel& p = scene.panels[v.panel];
+        for (ViewSlot& v : views) {
+            if (v.panel < 0) continue;
+            const Panel& p = scene.panels[v.panel];
+            if (const std::optional<Shape> shape = shape_of(p)) {
                 // Narrower, the title and legend may take more rows: measured again there.
                 const Box room = v.box;
-                v.box = tight_image_box(room, p, header(p, width(room)));
+                v.box = tight_box(room, *shape, header(p, width(room)));
                 const double h = header(p, width(v.box));
-                if (h != header(p, width(room))) v.box = tight_image_box(room, p, h);
+                if (h != header(p, width(room))) v.box = tight_box(room, *shape, h);
             }
+        }
     };
     std::vector<ViewSlot> mains, panels;
     const bool three = scene.has_3d();
@@ -178,13 +205,14 @@ std::vector<ViewSlot> layout_views(const Scene& scene, const Box& area, double g
     std::size_t charts = 0;
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const Panel& p = scene.panels[panels[i].panel];
-        if (p.kind != PanelKind::Image) {
+        const std::optional<Shape> shape = shape_of(p);
+        if (!shape) {
             chart_weight += pw[i], ++charts;
             continue;
         }
-        const double a = image_aspect(p);
-        need[i] = along_x ? (breadth - header(p, breadth) - kImageMarginY) * a + kImageMarginX
-                          : (breadth - kImageMarginX) / a + header(p, breadth) + kImageMarginY;
+        const double a = aspect_of(*shape);
+        need[i] = along_x ? (breadth - header(p, breadth) - shape->margin_y) * a + shape->margin_x
+                          : (breadth - shape->margin_x) / a + header(p, breadth) + shape->margin_y;
         images += need[i];
     }
     constexpr double kLeastChart = 200;  // a chart smaller than this is mostly its axes

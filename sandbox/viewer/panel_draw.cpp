@@ -333,9 +333,13 @@ ScreenMap draw_image(ImDrawList* dl, const Box& body, const Panel& panel, const 
 // A drawing in units of its own, fitted at one scale with room for its labels, no axes.
 ScreenMap draw_diagram(ImDrawList* dl, const Box& body, const Panel& panel, const Fonts& f,
                        GridTextures* textures, std::size_t slot, Recording rec) {
-    ScreenMap map{body, fit_view(panel, body.max - body.min, 24)};
+    ScreenMap map{body, fit_view(panel, body.max - body.min, 16)};
     const Box drawn = draw_scene(dl, map, panel, f, -1, {}, textures, rec, slot);
-    if (rec.record) rec.record->panels[rec.panel].content = drawn;
+    // (An empty diagram draws nothing: its content is a point, which the layout check flags.)
+    const glm::dvec2 middle = (body.min + body.max) / 2.0;
+    if (rec.record)
+        rec.record->panels[rec.panel].content =
+            drawn.min.x <= drawn.max.x ? drawn : Box{middle, middle};
     return map;
 }
 
