@@ -250,19 +250,9 @@ ScreenMap draw_world(Session& s, const Box& box, bool interactive, Recording rec
     const glm::dvec2 size = box.max - box.min;
     if (s.canvas.fit_pending || s.canvas.fitted_world != size) {
         const double sliders = sliders_height(s);
-        // Framed on the step's subject when it marks one in the world, else on everything.
-        const Scene& scene = s.scene();
-        Box subject = bounds_of(scene);
-        if (std::any_of(scene.focus2.begin(), scene.focus2.end(),
-                        [](const Focus2& f) { return f.panel < 0; })) {
-            subject = {glm::dvec2(DBL_MAX), glm::dvec2(-DBL_MAX)};
-            for (const Focus2& f : scene.focus2)
-                if (f.panel < 0)
-                    subject.min = glm::min(subject.min, f.lo),
-                    subject.max = glm::max(subject.max, f.hi);
-        }
-        s.canvas.view =
-            fit_box(subject, glm::max(size - glm::dvec2(0, sliders), glm::dvec2(1)), 40);
+        // Everything the world draws: a 2D construction is framed whole (its focus elements
+        // only say what must be large enough to see).
+        s.canvas.view = fit_view(s.scene(), glm::max(size - glm::dvec2(0, sliders), glm::dvec2(1)));
         s.canvas.view.center.y -= sliders / 2 / s.canvas.view.zoom;
         s.canvas.fitted_world = size;
     }
