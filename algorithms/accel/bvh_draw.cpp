@@ -241,11 +241,10 @@ void Bvh::draw(const State& s, Scene& scene) {
     }
     if (!framed.empty()) add_focus(scene, framed.min, framed.max);
 
-    // ---- the tree: a diagram panel (an empty raster as its canvas, in cell units) ----
-    // Its cells are only the diagram's coordinates: W × H, about the panel's shape beside a
-    // 3D view. Node x = the middle of its range of primitives, one row per depth from the top;
-    // past 31 nodes only the node in hand and those on the stack are labelled, and the leaves'
-    // lists are left to the narration.
+    // ---- the tree: a diagram panel, in units of its own ----
+    // W × H units, about the panel's shape beside a 3D view. Node x = the middle of its range of
+    // primitives, one row per depth from the top; past 31 nodes only the node in hand and those
+    // on the stack are labelled, and the leaves' lists are left to the narration.
     std::vector<std::uint8_t> seen(r.nodes.size(), 0);  // 1 missed/pruned, 2 entered
     if (tracing)
         for (std::size_t v = 0; v < popped; ++v)
@@ -258,13 +257,13 @@ void Bvh::draw(const State& s, Scene& scene) {
     int depth = 1;
     for (const Node& nd : r.nodes) depth = std::max(depth, nd.depth);
     const int W = std::max(14, n + 2), H = static_cast<int>(std::lround(W / 0.7));
-    PixelGrid2 canvas;
-    canvas.width = W;
-    canvas.height = H;
-    canvas.rgba.assign(std::size_t(W) * std::size_t(H), 0);
-    canvas.grid_lines = false;
-    Panel& tree = add_image(scene, "the tree, one row per depth", std::move(canvas));
+    Panel& tree = add_diagram(scene, "the tree, one row per depth");
     tree.weight = 1.1;
+    // The tree's room, framed: the diagram keeps one scale while the tree grows into it.
+    tree.polygons.push_back({{{0, 0}, {double(W), 0}, {double(W), double(H)}, {0, double(H)}},
+                             {Role::Construction, 1.0f},
+                             true,
+                             false});
     // Room above the root for its number, and below the deepest row for two rows of lists.
     const double top = H - 1.8, below = 3.4;
     const double dy = (top - below) / depth, sx = (W - 2.0) / std::max(n, 1);

@@ -623,7 +623,8 @@ TEST_CASE("bvh: the picture — boxes by depth, the node in hand, the ray, the h
     // The tree is a diagram panel of its own, not drawn into the world: the root, made now.
     CHECK(!pic.has_2d());
     REQUIRE(pic.panels.size() == 1);
-    CHECK(pic.panels[0].kind == cg::PanelKind::Image);
+    CHECK(pic.panels[0].kind == cg::PanelKind::Diagram);
+    CHECK(pic.panels[0].grids.empty());  // no raster under it
     REQUIRE(pic.panels[0].points.size() == s.r.nodes.size());
     CHECK(pic.panels[0].points[0].style.role == cg::Role::Active);
     REQUIRE(pic.panels[0].legend.size() == 1);
