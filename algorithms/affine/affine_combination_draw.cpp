@@ -1,7 +1,8 @@
 // Affine combinations, the picture. The current expression's parse tree, root at the top, each
 // node labelled with its operator and its type and coloured by it (point green, vector teal,
 // scalar grey, meaningless red, a partial sum Σ not yet 1 or 0 orange); under it, the verdicts so
-// far, the current expression orange. Expressions are written as a person writes them, not as
+// far, the current expression orange; drawn in the world without its grid (the coordinates are only
+// the layout's). Expressions are written as a person writes them, not as
 // they are typed: "sum_{i=0}^{3} B(3,i,t) P_i" is shown as "Σᵢ₌₀³ Bᵢ³(t) Pᵢ" (display()).
 #include <algorithm>
 #include <cmath>
@@ -321,6 +322,7 @@ void AffineCombination::draw(const State& s, Scene& scene) {
     const Parsed& p = *s.in;
     const int shown = std::max(0, s.k);
     const affine::Tree& tree = p.trees[shown];
+    scene.world_grid = false;  // a parse tree: its coordinates mean nothing to the student
     const int root = static_cast<int>(tree.nodes.size()) - 1;
     std::vector<std::string> type(tree.nodes.size());
     if (s.k >= 0)

@@ -450,6 +450,7 @@ TEST_CASE("affine-combination: the picture — the parse tree coloured by type, 
     cg::Scene before;
     AffineCombination::draw(s, before);
     CHECK_FALSE(before.has_3d());
+    CHECK_FALSE(before.world_grid);  // a tree: no grid, axes or ticks whose numbers mean nothing
     REQUIRE(before.points.size() == 5);  // P, Q, +, 2, /
     AffineCombination::step(s, nullptr);
     cg::Scene pic;
