@@ -4,9 +4,10 @@
 // its normal (at least 30 px). The ray runs left to right across the view, seen from the side
 // (orthographic), so the segments read as a cross-section; the camera frames the ray and the
 // solids.
-// Chart: the t axis in the ray's own units, one row per node's list (leaves first, the root's
-// last at the bottom): each inside segment a bar, an infinite end an arrow; the node in hand and
-// its two operands highlighted with their ends' values, the eye at t = 0 and the hit.
+// Chart: the t axis in the ray's own units, one row per node's list named on the y axis (leaves
+// first, the root's last at the bottom): each inside segment a bar, an infinite end an arrow;
+// the node in hand on a pale orange band, green, and its two operands teal, with their ends'
+// values; what the operation threw away thin and red; the eye at t = 0 and the hit.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -94,12 +95,9 @@ Range t_range(const CsgRay::State& s) {
     return r;
 }
 
-// One list on the chart at height y: its bars (an infinite end an arrow to the edge), the ends'
-// values when `values`, its name at the left.
-void chart_row(const CsgSpans& l, const std::string& name, double y, Range r, Style bar,
-               bool values, int priority, Panel& chart) {
-    chart.labels.push_back(
-        {{r.lo, y + 0.32}, name, {priority >= 20 ? Role::Active : Role::Neutral}, priority});
+// One list on the chart at height y: its bars (an infinite end an arrow to the edge), and the
+// ends' values when `values`.
+void chart_row(const CsgSpans& l, double y, Range r, Style bar, bool values, Panel& chart) {
     for (const CsgSpan& sp : l) {
         const double a = std::max(r.lo, sp.in.t), b = std::min(r.hi, sp.out.t);
         if (!(a < b)) continue;
@@ -198,12 +196,31 @@ void CsgRay::draw(const State& s, Scene& scene) {
         rows.push_back(static_cast<int>(t.nodes.size()) - 1);
     }
     const int count = std::max<int>(1, static_cast<int>(rows.size()));
+    // Row i at y = count − 1 − i (leaves on top, the root below), named on the y axis.
+    // Short names, so the axis leaves the bars room: a node's own name, else its expression
+    // ("pip 2 ∪ pip 3", not "tree.right.right"); the node in hand also with its expression.
+    std::vector<std::string> names(static_cast<std::size_t>(count));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const CsgNode& n = t.nodes[rows[i]];
+        std::string name = csg_node_label(n);
+        if (!n.leaf) {
+            const std::string expr = csg_node_label(t.nodes[n.left]) + " " + csg_op_symbol(n.op) +
+                                     " " + csg_node_label(t.nodes[n.right]);
+            if (n.name.empty())
+                name = expr;
+            else if (rows[i] == s.last && expr != name)
+                name += " = " + expr;
+        }
+        names[static_cast<std::size_t>(count) - 1 - i] = name;
+    }
+    Axis y_axis{"", -0.9, count - 0.5};
+    y_axis.names = std::move(names);
     Panel& chart = add_chart(scene, "each node's inside segments along the ray",
-                             Axis{"t", r.lo, r.hi}, Axis{"", -0.8, count - 0.3});
+                             Axis{"t", r.lo, r.hi}, std::move(y_axis));
     chart.weight = 1.3;
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const int k = rows[i];
-        const double y = count - 1 - static_cast<double>(i);  // leaves on top, the root below
+        const double y = count - 1 - static_cast<double>(i);
         const CsgNode& n = t.nodes[k];
         const bool node = k == s.last || (s.last < 0 && done && k == focus);
         const bool operand = s.last >= 0 && !t.nodes[s.last].leaf &&
@@ -211,17 +228,13 @@ void CsgRay::draw(const State& s, Scene& scene) {
         const Style bar = node      ? Style{Role::Kept, 7.0f}
                           : operand ? Style{Role::Entering, 5.0f}
                                     : Style{Role::Subject, 4.0f};
-        std::string name = csg_node_label(n);
-        if (!n.leaf) {  // "tree = drum − hole" (once, when the node's name is its expression)
-            const std::string expr = csg_node_label(t.nodes[n.left]) + " " + csg_op_symbol(n.op) +
-                                     " " + csg_node_label(t.nodes[n.right]);
-            if (expr != name) name += " = " + expr;
-        }
-        chart_row(s.lists[k], name, y, r, bar, node || operand,
-                  node      ? 20
-                  : operand ? 10
-                            : 0,
-                  chart);
+        if (node)  // the row in hand on a pale orange band
+            chart.polygons.push_back(
+                {{{r.lo, y - 0.3}, {r.hi, y - 0.3}, {r.hi, y + 0.3}, {r.lo, y + 0.3}},
+                 {Role::Active, 0.0f},
+                 true,
+                 true});
+        chart_row(s.lists[k], y, r, bar, node || operand, chart);
         if (node && !n.leaf && s.last >= 0) {  // what the operation threw away, thin and red
             const CsgSpans all = combine(CsgOp::Union, s.lists[n.left], s.lists[n.right]);
             for (const CsgSpan& sp : combine(CsgOp::Difference, all, s.lists[k])) {
@@ -233,11 +246,11 @@ void CsgRay::draw(const State& s, Scene& scene) {
         }
     }
     // The eye at t = 0, and the hit.
-    chart.segments.push_back({{0, -0.8}, {0, count - 0.3}, "", {Role::Construction, 1.0f, true}});
-    chart.labels.push_back({{0, -0.6}, "eye", {Role::Construction}});
+    chart.segments.push_back({{0, -0.9}, {0, count - 0.5}, "", {Role::Construction, 1.0f, true}});
+    chart.labels.push_back({{0, count - 0.6}, "eye", {Role::Construction}});
     if (done && s.hit.hit) {
         chart.segments.push_back(
-            {{s.hit.t, -0.8}, {s.hit.t, count - 0.3}, "", {Role::Kept, 1.5f, true}, false});
+            {{s.hit.t, -0.9}, {s.hit.t, count - 0.5}, "", {Role::Kept, 1.5f, true}, false});
         chart.points.push_back(
             {{s.hit.t, 0}, "hit t = " + num(s.hit.t, 4), {Role::Active}, 6.0f, 3});
     }

@@ -10,12 +10,12 @@
 // Panels: the image (pixels/rows: as computed; ray-tree: a dimmed preview) with the pixel or the
 // row outlined and the pixel's row and column dashed; below it
 //   pixels/rows  the rays each row cost, stacked by kind;
-//   ray-tree     the ray tree as the course draws it, each ray's returned colour beside it;
+//   ray-tree     the ray tree as the course draws it (a diagram), each ray's returned colour
+//                beside it;
 //   a distributed pixel: its samples — where each crosses the pixel (magnified), its lens
 //                point, its time — the one in hand orange;
 //   an area light once its shadow rays are cast: the light's area with each ray's point, green
 //                where it reached the light, red where it was blocked (the penumbra's share).
-// A diagram's canvas is shaped like its panel, so that it fills it.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -397,28 +397,6 @@ int sample_in_hand(const RayTracer::State& s) {
     return k >= 0 ? s.tree[static_cast<std::size_t>(k)].sample : -1;
 }
 
-// The shape of a panel under the image (width : height, what its title and legend leave): a
-// diagram's canvas takes it, so that its content fills the panel.
-constexpr double kTreeAspect = 1.9;  // under a title and a legend
-constexpr double kBareAspect = 1.6;  // under a title only
-
-// Pads a canvas with empty cells round it to `aspect`, its content centred; returns the shift
-// given to its coordinates.
-dvec2 pad_to(PixelGrid2& g, double aspect) {
-    const int w = std::max(g.width, static_cast<int>(std::ceil(g.height * aspect)));
-    const int h = std::max(g.height, static_cast<int>(std::ceil(g.width / aspect)));
-    const int left = (w - g.width) / 2, bottom = (h - g.height) / 2;
-    if (w == g.width && h == g.height) return {0, 0};
-    std::vector<std::uint32_t> out(static_cast<std::size_t>(w) * h, 0u);
-    for (int j = 0; j < g.height; ++j)
-        for (int i = 0; i < g.width; ++i)
-            out[static_cast<std::size_t>(j + bottom) * w + left + i] =
-                g.rgba[static_cast<std::size_t>(j) * g.width + i];
-    g.rgba = std::move(out);
-    g.width = w, g.height = h;
-    return {left, bottom};
-}
-
 // A distributed pixel's samples, side by side in one canvas (8 cells an image pixel): the pixel
 // and its neighbours magnified with where each sample crosses the pixel; with depth of field
 // the lens with each sample's point on it; with motion blur the shutter's interval with each
@@ -438,7 +416,7 @@ void add_samples_panel(const RayTracer::State& s, Scene& scene) {
     if (shutter) right = strip_x + K;
     PixelGrid2 canvas;
     canvas.width = right;
-    canvas.height = kPart;
+    canvas.height = kPart + (lens || shutter ? 3 : 0);  // room above for the parts' names
     canvas.grid_lines = false;
     canvas.rgba.assign(static_cast<std::size_t>(canvas.width) * canvas.height, 0u);
     auto set = [&](int x, int y, std::uint32_t v) {
@@ -459,24 +437,23 @@ void add_samples_panel(const RayTracer::State& s, Scene& scene) {
     if (shutter)
         for (int y = 0; y < kPart; ++y)
             for (int x = 0; x < K; ++x) set(strip_x + x, y, 0xe4e4e4ffu);
-    const dvec2 shift = pad_to(canvas, kBareAspect);
 
     const int n = static_cast<int>(s.samples.size());
     // One line of title: the canvas's parts are named inside it.
     const std::string title = "pixel (" + std::to_string(pi) + ", " + std::to_string(pj) +
                               "): its " + std::to_string(n) + " samples";
     Panel& panel = add_image(scene, title, std::move(canvas));
-    const double x0 = shift.x + (pi - i0) * K, y0 = shift.y + (pj - j0) * K;
+    const double x0 = (pi - i0) * K, y0 = (pj - j0) * K;
     panel.polygons.push_back({{{x0, y0}, {x0 + K, y0}, {x0 + K, y0 + K}, {x0, y0 + K}},
                               {Role::Window, 2.0f},
                               true,
                               false});
     if (lens)
         panel.labels.push_back(
-            {shift + dvec2(lens_x + kPart / 2.0, kPart + 0.5), "lens", {Role::Construction}});
+            {dvec2(lens_x + kPart / 2.0, kPart + 1.5), "lens", {Role::Construction}});
     if (shutter)
         panel.labels.push_back(
-            {shift + dvec2(strip_x + K / 2.0, kPart + 0.5), "time ↑", {Role::Construction}});
+            {dvec2(strip_x + K / 2.0, kPart + 1.5), "time ↑", {Role::Construction}});
     const int now = sample_in_hand(s);
     for (int k = 0; k < n; ++k) {
         const rt::PixelSample& ps = s.samples[static_cast<std::size_t>(k)];
@@ -489,13 +466,10 @@ void add_samples_panel(const RayTracer::State& s, Scene& scene) {
                                 k == now ? 3 : 0});
         if (lens)
             panel.points.push_back(
-                {shift + dvec2(lens_x, 0) + (ps.lens + 1.0) * (kPart / 2.0), "", {role}, r});
+                {dvec2(lens_x, 0) + (ps.lens + 1.0) * (kPart / 2.0), "", {role}, r});
         if (shutter)
             panel.points.push_back(
-                {shift + dvec2(strip_x + (k + 0.5) * K / n, kPart * ps.time / c.shutter),
-                 "",
-                 {role},
-                 r});
+                {dvec2(strip_x + (k + 0.5) * K / n, kPart * ps.time / c.shutter), "", {role}, r});
     }
 }
 
@@ -554,9 +528,6 @@ bool add_light_panel(const RayTracer::State& s, Scene& scene) {
         ++cast;
         reached += n.blocker < 0;
     }
-    const dvec2 shift = pad_to(area, kBareAspect);
-    for (dvec2& p : lit) p += shift;
-    for (dvec2& p : blocked) p += shift;
     Panel& panel =
         add_image(scene,
                   "light " + std::to_string(ref.light) + "'s area: " + std::to_string(reached) +
@@ -610,8 +581,8 @@ void add_rows_chart(const RayTracer::State& s, Scene& scene) {
 
 // Ray-tree: the tree as the course draws it — each ray a node under the ray that cast it (shadow
 // rays the leaves), in the 3D view's colours, with the colour each ray carried back once it has
-// returned. An empty raster is the diagram's canvas, in cell units.
-void add_tree_panel(const RayTracer::State& s, Scene& scene, double aspect) {
+// returned.
+void add_tree_panel(const RayTracer::State& s, Scene& scene, bool alone) {
     const std::vector<RayNode>& tree = s.tree;
     const int n = static_cast<int>(tree.size());
     std::vector<std::vector<int>> children(static_cast<std::size_t>(n));
@@ -645,21 +616,19 @@ void add_tree_panel(const RayTracer::State& s, Scene& scene, double aspect) {
             todo.push_back({*c, false});
         }
     }
-    // The canvas: 2 cells a leaf, 3 a level, in the panel's shape (`aspect`, width : height).
+    // A diagram, 2 units a leaf and 3 a level, in a framed room a little larger than the tree
+    // and about 12 : 5 under the image (wide, so that the legend fits in a row above it), square
+    // alone; fitted to its panel at one scale.
     constexpr double kDx = 2, kDy = 3;
-    int W = std::max(8, static_cast<int>(kDx * leaves) + 4);
-    int H = std::max(static_cast<int>(kDy * levels) + 3, static_cast<int>(W / aspect));
-    W = std::max(W, static_cast<int>(H * aspect));
-    PixelGrid2 canvas;
-    canvas.width = W, canvas.height = H;
-    canvas.rgba.assign(static_cast<std::size_t>(W) * H, 0u);
-    canvas.grid_lines = false;
-    Panel& panel = add_image(
-        scene, n == 0 ? "the ray tree (no ray yet)" : "the ray tree, colours carried back",
-        std::move(canvas));
-    const double x0 = (W - kDx * std::max(leaves - 1, 0)) / 2,
-                 y0 = H - (H - kDy * (levels - 1)) / 2;
-    auto pos = [&](int k) { return dvec2(x0 + kDx * x[k], y0 - kDy * level[k]); };
+    Panel& panel = add_diagram(scene, "the ray tree");
+    auto pos = [&](int k) { return dvec2(kDx * x[k], -kDy * level[k]); };
+    double room_w = kDx * std::max(leaves - 1, 0) + 3, room_h = kDy * (levels - 1) + 3;
+    const double aspect = alone ? 1.0 : 2.4;
+    room_w = std::max(room_w, aspect * room_h), room_h = std::max(room_h, room_w / aspect / 1.25);
+    const double cx = kDx * std::max(leaves - 1, 0) / 2, cy = -kDy * (levels - 1) / 2.0;
+    const dvec2 a(cx - room_w / 2, cy - room_h / 2), b(cx + room_w / 2, cy + room_h / 2);
+    panel.polygons.push_back(
+        {{a, {b.x, a.y}, b, {a.x, b.y}}, {Role::Construction, 1.0f}, true, false});
     for (int k = 0; k < n; ++k)
         if (tree[k].parent >= 0)
             panel.segments.push_back({pos(tree[k].parent),
@@ -695,9 +664,10 @@ void add_tree_panel(const RayTracer::State& s, Scene& scene, double aspect) {
               : r.kind == RayKind::Reflected ? 3
                                              : 4] = true;
     }
-    const char* names[] = {"primary", "lit", "blocked", "mirror", "refracted"};
+    // The key (the root is the primary ray, named R0 in its orange: no entry for it).
+    const char* names[] = {"primary", "shadow, lit", "blocked", "mirror", "refracted"};
     const Role roles[] = {Role::Active, Role::Kept, Role::Discarded, Role::Entering, Role::Leaving};
-    for (int k = 0; k < 5; ++k)
+    for (int k = 1; k < 5; ++k)
         if (kinds[k]) panel.legend.push_back({names[k], {roles[k]}, true});
 }
 
@@ -761,8 +731,7 @@ void RayTracer::draw(const State& s, Scene& scene) {
         add_samples_panel(s, scene);
     } else {
         // An area light's shadow rays, once cast, say more than the tree of this one ray.
-        if (!add_light_panel(s, scene))
-            add_tree_panel(s, scene, scene.panels.empty() ? 0.7 : kTreeAspect);
+        if (!add_light_panel(s, scene)) add_tree_panel(s, scene, scene.panels.empty());
     }
 
     // ---- 3D ----

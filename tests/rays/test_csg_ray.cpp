@@ -729,9 +729,9 @@ TEST_CASE("csg-ray: the picture shows the solids, the ray's segments and the t c
     // [3, 5] thin and red.
     const cg::Panel& chart = scenes[2].panels.at(0);
     int rows = 0;
-    for (const auto& l : chart.labels)
-        rows += l.text.rfind("A", 0) == 0 || l.text.rfind("B", 0) == 0;
-    CHECK(rows == 3);
+    for (const auto& name : chart.y.names)
+        rows += name.rfind("A", 0) == 0 || name.rfind("B", 0) == 0;
+    CHECK(rows == 3);  // named on the y axis: A, B, A − B
     bool kept_bar = false, red_bar = false;
     for (const auto& sg : chart.segments) {
         kept_bar = kept_bar || (sg.style.role == cg::Role::Kept && sg.a.x == 5 && sg.b.x == 7);

@@ -874,7 +874,7 @@ TEST_CASE("ray-tracer: the picture shows the image, the scene and the ray tree",
         CHECK(image.grids[0].width == 48);
         REQUIRE(image.polygons.size() == 1);
         CHECK(image.polygons[0].style.role == cg::Role::Active);
-        CHECK(pic.panels[1].kind == cg::PanelKind::Image);
+        CHECK(pic.panels[1].kind == cg::PanelKind::Diagram);  // the ray tree
         CHECK(pic.has_3d());
         CHECK(pic.focus3.size() == 1);  // the camera frames the step's rays
     }
