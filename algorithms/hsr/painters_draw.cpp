@@ -4,8 +4,8 @@
 // it is tested against teal; pieces just made by a split orange — with the pair's verdict under
 // the buffer. Beside it a chart of the list itself: one bar per piece spanning its z extent,
 // in drawing order left to right, the x axis naming the places 1st, 2nd, … (settled pieces
-// first, drawn ones green, then the list still to settle, a dashed line between), so that which z extents overlap, and why P may or may not
-// be drawn before Q, reads off the bars.
+// first, drawn ones green, then the list still to settle, a dashed line between), so that which
+// z extents overlap, and why P may or may not be drawn before Q, reads off the bars.
 #include <algorithm>
 #include <cmath>
 
