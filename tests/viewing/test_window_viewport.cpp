@@ -278,8 +278,11 @@ TEST_CASE("window-viewport: the aspect ratio warning", "[viewing][window-viewpor
         auto s = WindowViewport::start({c.window, c.viewport, {}});
         WindowViewport::step(s, nullptr);
         WindowViewport::draw(s, scene);
+        // The warning is written under the viewport, in the device's chart.
+        REQUIRE(scene.panels.size() == 2);
         bool warning = false;
-        for (const auto& l : scene.labels) warning = warning || l.style.role == cg::Role::Discarded;
+        for (const auto& l : scene.panels[1].labels)
+            warning = warning || l.style.role == cg::Role::Discarded;
         CHECK(warning == c.distorted);
     }
 }
@@ -362,30 +365,47 @@ TEST_CASE("window-viewport: the picture shows window, NDC and viewport side by s
     for (int k = 0; k < 7; ++k) WindowViewport::step(s, nullptr);  // up to P0's device image
     cg::Scene scene;
     WindowViewport::draw(s, scene);
-    std::vector<std::string> captions;
-    for (const auto& l : scene.labels) captions.push_back(l.text);
-    auto has = [&](const std::string& start) {
-        return std::any_of(captions.begin(), captions.end(),
-                           [&](const std::string& c) { return c.rfind(start, 0) == 0; });
-    };
-    CHECK(has("window (world) [0, 8] × [0, 4]"));
-    CHECK(has("NDC [−1, 1] × [−1, 1]"));
-    CHECK(has("viewport (device) [0, 640] × [0, 480]"));
-    CHECK(has("distorted"));
-    int windows = 0;
-    for (const auto& p : scene.polygons) windows += p.style.role == cg::Role::Window;
-    CHECK(windows == 2);
-    // The window is drawn where it is: its handles edit the input directly.
+    // The window in the world, where it is: its handles edit the input directly.
+    REQUIRE(scene.labels.size() == 1);
+    CHECK(scene.labels[0].text == "window (world) [0, 8] × [0, 4]");
     REQUIRE(scene.handles.size() == 5);
     CHECK(scene.handles[0].p == dvec2(2, 1));
     CHECK(scene.handles[0].x_field == "/points/0/0");
     CHECK(scene.handles[4].y_field == "/window/ymax");
-    bool active_arrow = false;
-    for (const auto& seg : scene.segments)
-        active_arrow = active_arrow || (seg.style.role == cg::Role::Active && seg.arrow);
-    CHECK(active_arrow);
-    int construction = 0;
-    for (const auto& seg : scene.segments)
-        construction += seg.style.role == cg::Role::Construction && !seg.arrow;
-    CHECK(construction >= 3);  // the NDC axes and the lines to images already mapped
+    // NDC and the device are charts in their own units, one scale for x and y each, so the
+    // square stays square and a distortion shows.
+    REQUIRE(scene.panels.size() == 2);
+    const cg::Panel &ndc = scene.panels[0], &dev = scene.panels[1];
+    CHECK(ndc.kind == cg::PanelKind::Chart);
+    CHECK(ndc.title == "NDC [−1, 1] × [−1, 1]");
+    CHECK(ndc.x.label == "x_ndc");
+    CHECK((ndc.x.lo <= -1 && ndc.x.hi >= 1 && ndc.y.lo <= -1 && ndc.y.hi >= 1));
+    CHECK(ndc.equal_aspect);
+    CHECK(ndc.points.size() == 3);  // every point's image in NDC
+    CHECK(dev.kind == cg::PanelKind::Chart);
+    CHECK(dev.title == "viewport (device) [0, 640] × [0, 480]");
+    CHECK(dev.equal_aspect);
+    CHECK_FALSE(dev.y.reversed);
+    REQUIRE(dev.polygons.size() >= 1);
+    CHECK(dev.polygons[0].style.role == cg::Role::Window);
+    bool distorted = false;
+    for (const auto& l : dev.labels) distorted = distorted || l.text.rfind("distorted", 0) == 0;
+    CHECK(distorted);
+    // P0 just mapped to the device: orange there, with its coordinates.
+    REQUIRE(dev.points.size() == 1);
+    CHECK(dev.points[0].style.role == cg::Role::Active);
+    CHECK(dev.points[0].label == "P0_device = (160, 120)");
+
+    // A screen whose rows run downward: the device's y axis grows downward, so the image is
+    // upright and the corners say where the window's corners land.
+    WindowViewport::Input screen{{0, 0, 8, 6}, {0, 768, 1024, 0}, {{2, 3}}};
+    screen.form = WindowViewport::Form::YDown;
+    cg::Scene down;
+    WindowViewport::draw(WindowViewport::start(screen), down);
+    REQUIRE(down.panels.size() == 2);
+    CHECK(down.panels[1].y.reversed);
+    CHECK(down.panels[1].title == "viewport (device, y down)");
+    bool corner = false;
+    for (const auto& l : down.panels[1].labels) corner = corner || l.text == "(0, 768)";
+    CHECK(corner);
 }
