@@ -49,6 +49,6 @@ shot liang-barsky --lesson liang-barsky --preset "a segment crossing two edges" 
 # The gallery: a 3D lesson, a ray tree, a Bézier construction, exam practice.
 shot arcball --lesson arcball --preset "a small closed loop: the ball comes back" --step 11
 shot ray-tree --lesson ray-tracer \
-  --preset "through the glass ball: refraction in and out (depth 2)" --step 19
+  --preset "through the glass ball: refraction in and out (depth 2)" --step 26
 shot de-casteljau --lesson de-casteljau --preset "a cubic split in half" --step 3
 shot exam liang-barsky --exam 7

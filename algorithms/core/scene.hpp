@@ -124,6 +124,9 @@ struct Handle2 {
     std::string name;     // shown on hover: "P0"
     std::string x_field;  // JSON pointer of the input field the x coordinate edits
     std::string y_field;  // ... and the y coordinate
+    // A drag puts the point at the centre of the cell under the mouse (a pixel of an image
+    // panel's first grid, inside it) instead of at a round number near the mouse.
+    bool cell_centres = false;
 };
 
 // ---- 3D: drawn on the viewer's 3D canvas (orbited by the project's own arcball) ----

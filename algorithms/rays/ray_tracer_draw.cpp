@@ -8,7 +8,8 @@
 // the whole tree when the colour is summed, the hierarchy's root box at the build, the eye and
 // the objects while the image fills in.
 // Panels: the image (pixels/rows: as computed; ray-tree: a dimmed preview) with the pixel or the
-// row outlined and the pixel's row and column dashed; below it
+// row outlined and the pixel's row and column dashed (ray-tree: the pixel a handle, dragged from
+// pixel centre to pixel centre); below it
 //   pixels/rows  the rays each row cost, stacked by kind;
 //   ray-tree     the ray tree as the course draws it (a diagram), each ray's returned colour
 //                beside it;
@@ -722,6 +723,12 @@ void RayTracer::draw(const State& s, Scene& scene) {
                                       true,
                                       false});
         }
+        if (tree_mode && !in.explicit_ray)  // drag it to trace another pixel
+            image.handles.push_back({{hi + 0.5, hj + 0.5},
+                                     "pixel",
+                                     "/stepping/pixel/0",
+                                     "/stepping/pixel/1",
+                                     true});
         // A little less than an equal share: a chart below needs its legend and axes' room.
         image.weight = tree_mode ? 1 : 0.95;
     }

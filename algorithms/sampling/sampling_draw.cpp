@@ -7,8 +7,8 @@
 // alias in red with the fold as an arrow.
 // An image: two image panels, the image point-sampled at the pixel centres and supersampled,
 // filling row by row (the row in hand outlined, rows not sampled yet pale blue, not white),
-// with the true edge, the horizon or the zone
-// plate's Nyquist circle drawn in their cells.
+// with the true edge (its point a handle to drag in the first), the horizon or the zone plate's
+// Nyquist circle drawn in their cells.
 #include <algorithm>
 #include <cmath>
 
@@ -193,6 +193,9 @@ void draw_image(const Sampling::State& s, Scene& scene) {
             dvec2 a, b;
             if (clip_line(in.image.point, in.image.angle, w, h, a, b))
                 panel.segments.push_back({a, b, "", {Role::Window, 1.5f, true}, false});
+            if (side == 0)  // drag the edge's point to move it
+                panel.handles.push_back(
+                    {in.image.point, "edge", "/image/point/0", "/image/point/1"});
         } else if (in.image.horizon > 0 && in.image.horizon < h) {
             panel.segments.push_back({{0, in.image.horizon},
                                       {double(w), in.image.horizon},

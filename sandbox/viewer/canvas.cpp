@@ -65,11 +65,11 @@ namespace {
 
 constexpr double kGrabPixels = 9;  // how near the mouse must be to pick a handle up
 
-int handle_under(const Scene& scene, const ScreenMap& map, glm::dvec2 mouse) {
+int handle_under(const std::vector<Handle2>& handles, const ScreenMap& map, glm::dvec2 mouse) {
     int best = -1;
     double best_distance = kGrabPixels;
-    for (std::size_t i = 0; i < scene.handles.size(); ++i) {
-        const glm::dvec2 d = map.to_screen(scene.handles[i].p) - mouse;
+    for (std::size_t i = 0; i < handles.size(); ++i) {
+        const glm::dvec2 d = map.to_screen(handles[i].p) - mouse;
         const double distance = std::max(std::abs(d.x), std::abs(d.y));
         if (distance <= best_distance) best = static_cast<int>(i), best_distance = distance;
     }
@@ -99,18 +99,37 @@ bool set_number(json& input, const std::string& pointer, double v) {
     }
 }
 
-void drag_handle(Session& s, const Handle2& handle, glm::dvec2 target, double zoom) {
-    const double step = nice_step(5 / zoom);  // a few pixels: round numbers at any zoom
+// Moves `handle` to `target` (map units) rounded to a few pixels' worth, so that its input
+// gets round numbers at any zoom; or, for a handle on cell centres, to the centre of the cell
+// of `cells` under it. Returns false when its fields are missing (said in the status line).
+bool drag_handle(Session& s, const Handle2& handle, glm::dvec2 target, const ScreenMap& map,
+                 const PixelGrid2* cells = nullptr) {
+    glm::dvec2 value;
+    if (handle.cell_centres && cells) {
+        const glm::dvec2 cell = glm::floor(target - cells->origin);
+        value = cells->origin + glm::clamp(cell, glm::dvec2(0),
+                                           glm::dvec2(cells->width - 1, cells->height - 1)) +
+                0.5;
+    } else {
+        value = {snap(target.x, nice_step(5 / map.view.zoom)),
+                 snap(target.y, nice_step(5 / (map.view.zoom * std::abs(map.y_scale))))};
+    }
     json edited = s.input;
-    if (!set_number(edited, handle.x_field, snap(target.x, step)) ||
-        !set_number(edited, handle.y_field, snap(target.y, step))) {
+    if (!set_number(edited, handle.x_field, value.x) ||
+        !set_number(edited, handle.y_field, value.y)) {
         s.set_status("cannot move " + handle.name + ": its input fields " + handle.x_field + ", " +
                          handle.y_field + " do not exist",
                      true);
-        s.canvas.dragged_handle = -1;
-        return;
+        return false;
     }
     if (edited != s.input) s.edit(std::move(edited));  // same step, new input
+    return true;
+}
+
+// The tooltip and cursor over a handle.
+void show_handle(const Handle2& h) {
+    ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+    ImGui::SetTooltip("%s  %s", h.name.c_str(), num(h.p).c_str());
 }
 
 void zoom_at(View2& view, const ScreenMap& map, glm::dvec2 mouse, float wheel) {
@@ -134,7 +153,7 @@ int interact(Session& s, const Scene& scene, const ScreenMap& map) {
 
     if (!ImGui::IsItemActive()) c.dragged_handle = -1, c.panning = false;
     int hot = c.dragged_handle;
-    if (hot < 0 && hovered && !c.panning) hot = handle_under(scene, map, mouse);
+    if (hot < 0 && hovered && !c.panning) hot = handle_under(scene.handles, map, mouse);
     if (ImGui::IsItemActivated()) {
         // The left button on a handle drags it; any other press pans.
         if (io.MouseClicked[ImGuiMouseButton_Left] && hot >= 0) {
@@ -146,8 +165,9 @@ int interact(Session& s, const Scene& scene, const ScreenMap& map) {
     }
 
     if (c.dragged_handle >= 0 && c.dragged_handle < static_cast<int>(scene.handles.size())) {
-        drag_handle(s, scene.handles[c.dragged_handle], map.to_world(mouse) + c.grab_offset,
-                    map.view.zoom);
+        if (!drag_handle(s, scene.handles[c.dragged_handle], map.to_world(mouse) + c.grab_offset,
+                         map))
+            c.dragged_handle = -1;
     } else if (c.panning) {
         c.view.center.x -= io.MouseDelta.x / c.view.zoom;
         c.view.center.y += io.MouseDelta.y / c.view.zoom;
@@ -155,13 +175,49 @@ int interact(Session& s, const Scene& scene, const ScreenMap& map) {
     if (hovered && io.MouseWheel != 0) zoom_at(c.view, map, mouse, io.MouseWheel);
 
     if (hot >= 0 && hot < static_cast<int>(scene.handles.size())) {
-        ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
-        const Handle2& h = scene.handles[hot];
-        ImGui::SetTooltip("%s  %s", h.name.c_str(), num(h.p).c_str());
+        show_handle(scene.handles[hot]);
     } else if (c.panning) {
         ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeAll);
     }
     return hot;
+}
+
+// The handles of a panel (Panel::handles; not on a log axis), `index` in Scene::panels, drawn
+// in `box` by `map`: hovering one names it, the left button drags it. What is hot is kept in
+// the canvas state, for the panel to draw highlighted next frame. The drag may restart the run:
+// `panel` is not used after it.
+void interact_panel(Session& s, const Panel& panel, int index, const Box& box,
+                    const ScreenMap& map) {
+    CanvasState& c = s.canvas;
+    if (panel.handles.empty() || panel.x.log || panel.y.log) return;
+    ImGui::PushID(index);
+    ImGui::SetCursorScreenPos(im(box.min));
+    ImGui::InvisibleButton("panel", im(box.max - box.min));
+    ImGui::PopID();
+    const glm::dvec2 mouse = dv(ImGui::GetIO().MousePos);
+    const int count = static_cast<int>(panel.handles.size());
+    if (!ImGui::IsItemActive() && c.panel_dragged == index) c.panel_dragged = -1;
+    int hot = -1;
+    if (c.panel_dragged == index)
+        hot = c.panel_hot_handle < count ? c.panel_hot_handle : -1;
+    else if (ImGui::IsItemHovered())
+        hot = handle_under(panel.handles, map, mouse);
+    if (ImGui::IsItemActivated() && hot >= 0) {
+        c.panel_dragged = index;
+        c.grab_offset = panel.handles[hot].p - map.to_world(mouse);
+    }
+    if (hot >= 0) {
+        c.panel_hot = index, c.panel_hot_handle = hot;
+        show_handle(panel.handles[hot]);
+    } else if (c.panel_hot == index) {
+        c.panel_hot = c.panel_hot_handle = -1;
+    }
+    if (c.panel_dragged == index && hot >= 0) {
+        const Handle2 handle = panel.handles[hot];  // a copy: the run may restart
+        const PixelGrid2* cells = panel.grids.empty() ? nullptr : &panel.grids.front();
+        if (!drag_handle(s, handle, map.to_world(mouse) + c.grab_offset, map, cells))
+            c.panel_dragged = -1;
+    }
 }
 
 // --- [title] ---------------------------------------------------------------------------------
@@ -402,8 +458,15 @@ void draw_canvas(Session& s, bool interactive) {
             case ViewKind::Image:
             case ViewKind::Diagram: {
                 const Panel& p = scene.panels[v.panel];
+                const int hot = s.canvas.panel_hot == v.panel ? s.canvas.panel_hot_handle : -1;
                 panel_maps[v.panel] =
-                    draw_panel(dl, v.box, p, s.fonts, s.textures, texture_slot, rec);
+                    draw_panel(dl, v.box, p, s.fonts, s.textures, texture_slot, rec, hot);
+                if (s.record_widgets)  // where each handle is, for the GUI tests to grab
+                    for (const Handle2& h : p.handles) {
+                        const glm::dvec2 at = panel_maps[v.panel].to_screen(h.p);
+                        s.widgets["handle:" + h.name] = {
+                            {at - glm::dvec2(4), at + glm::dvec2(4)}, v.box, v.box.contains(at)};
+                    }
                 texture_slot += p.grids.size();
                 break;
             }
@@ -431,6 +494,11 @@ void draw_canvas(Session& s, bool interactive) {
             for (const Focus3& f : scene.focus3)
                 record->focus.push_back({screen_bounds(*proj, f), index_of(ViewKind::View3d, -1)});
     }
+    // Last, as a drag restarts the run and `scene` with it.
+    if (interactive)
+        for (const ViewSlot& v : views)
+            if (v.panel >= 0 && v.panel < static_cast<int>(s.scene().panels.size()))
+                interact_panel(s, s.scene().panels[v.panel], v.panel, v.box, panel_maps[v.panel]);
     draw_sliders(s, main);
 }
 

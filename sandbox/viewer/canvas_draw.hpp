@@ -80,10 +80,12 @@ Box draw_scene(ImDrawList* dl, const ScreenMap& map, const Layer2& layer, const 
 
 // A chart or an image panel of the scene in `box`: its title above, then a chart's axes and
 // ticks in its own units, its series and legend; or an image filling the rest, pixel-exact.
-// Returns the map from the panel's coordinates to the screen (for its focus elements).
+// Returns the map from the panel's coordinates to the screen (for its focus elements and
+// handles); `hot_handle` is the panel's handle hovered or dragged, or -1.
 // panel_header_height: how tall its title and legend are in a panel `width` pixels wide.
 double panel_header_height(const Panel& panel, double width, const Fonts& fonts);
 ScreenMap draw_panel(ImDrawList* dl, const Box& box, const Panel& panel, const Fonts& fonts,
-                     GridTextures* textures, std::size_t texture_slot, Recording recording);
+                     GridTextures* textures, std::size_t texture_slot, Recording recording,
+                     int hot_handle = -1);
 
 }  // namespace cg::viewer

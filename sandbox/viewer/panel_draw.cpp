@@ -221,7 +221,7 @@ double draw_legend(ImDrawList* dl, const Box& box, const std::vector<LegendEntry
 // --- [chart] ---------------------------------------------------------------------------------
 
 ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const Fonts& f,
-                     GridTextures* textures, std::size_t slot, Recording rec) {
+                     GridTextures* textures, std::size_t slot, Recording rec, int hot) {
     const Layer2 layer = logged(panel, panel.x.log, panel.y.log);
     Range dx, dy;
     data_range(layer, dx, dy);
@@ -299,7 +299,7 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
     }
 
     dl->PushClipRect(im(plot.min), im(plot.max), true);
-    draw_scene(dl, map, layer, f, -1, {}, textures, rec, slot);
+    draw_scene(dl, map, layer, f, hot, {}, textures, rec, slot);
     dl->PopClipRect();
     // What the chart draws: the plot and its ticks' numbers (the axes' names and the title are
     // the panel's own rows).
@@ -312,7 +312,7 @@ ScreenMap draw_chart(ImDrawList* dl, const Box& body, const Panel& panel, const 
 // --- [image] ---------------------------------------------------------------------------------
 
 ScreenMap draw_image(ImDrawList* dl, const Box& body, const Panel& panel, const Fonts& f,
-                     GridTextures* textures, std::size_t slot, Recording rec) {
+                     GridTextures* textures, std::size_t slot, Recording rec, int hot) {
     ScreenMap map{body.grown(-4), {}};
     if (panel.grids.empty()) return map;
     const PixelGrid2& g = panel.grids.front();
@@ -321,7 +321,7 @@ ScreenMap draw_image(ImDrawList* dl, const Box& body, const Panel& panel, const 
     const double zoom = image_zoom(room.x / w, room.y / h);  // as the layout sized the panel
     map.view = {glm::dvec2(w / 2, h / 2), std::max(zoom, 1e-6)};
     const Box image{map.to_screen({0, h}), map.to_screen({w, 0})};
-    draw_scene(dl, map, panel, f, -1, {}, textures, rec, slot);
+    draw_scene(dl, map, panel, f, hot, {}, textures, rec, slot);
     dl->AddRect(im(image.min - glm::dvec2(1)), im(image.max + glm::dvec2(1)),
                 im_colour(kPlotFrame));
     if (rec.record) rec.record->panels[rec.panel].content = image;
@@ -332,9 +332,9 @@ ScreenMap draw_image(ImDrawList* dl, const Box& body, const Panel& panel, const 
 
 // A drawing in units of its own, fitted at one scale with room for its labels, no axes.
 ScreenMap draw_diagram(ImDrawList* dl, const Box& body, const Panel& panel, const Fonts& f,
-                       GridTextures* textures, std::size_t slot, Recording rec) {
+                       GridTextures* textures, std::size_t slot, Recording rec, int hot) {
     ScreenMap map{body, fit_view(panel, body.max - body.min, 16)};
-    const Box drawn = draw_scene(dl, map, panel, f, -1, {}, textures, rec, slot);
+    const Box drawn = draw_scene(dl, map, panel, f, hot, {}, textures, rec, slot);
     // (An empty diagram draws nothing: its content is a point, which the layout check flags.)
     const glm::dvec2 middle = (body.min + body.max) / 2.0;
     if (rec.record)
@@ -354,17 +354,19 @@ double panel_header_height(const Panel& panel, double width, const Fonts& fonts)
 }
 
 ScreenMap draw_panel(ImDrawList* dl, const Box& box, const Panel& panel, const Fonts& fonts,
-                     GridTextures* textures, std::size_t texture_slot, Recording rec) {
+                     GridTextures* textures, std::size_t texture_slot, Recording rec,
+                     int hot_handle) {
     dl->PushClipRect(im(box.min), im(box.max), true);
     dl->AddRect(im(box.min), im(box.max), im_colour(kPanelFrame));
     double top = draw_title(dl, box, panel.title, fonts);
     top += draw_legend(dl, {{box.min.x, box.min.y + top}, box.max}, panel.legend, fonts);
     const Box body{{box.min.x + 4, box.min.y + top}, {box.max.x - 4, box.max.y - 4}};
     const ScreenMap map = panel.kind == PanelKind::Image
-                              ? draw_image(dl, body, panel, fonts, textures, texture_slot, rec)
+                              ? draw_image(dl, body, panel, fonts, textures, texture_slot, rec, hot_handle)
                           : panel.kind == PanelKind::Diagram
-                              ? draw_diagram(dl, body, panel, fonts, textures, texture_slot, rec)
-                              : draw_chart(dl, body, panel, fonts, textures, texture_slot, rec);
+                              ? draw_diagram(dl, body, panel, fonts, textures, texture_slot, rec,
+                                             hot_handle)
+                              : draw_chart(dl, body, panel, fonts, textures, texture_slot, rec, hot_handle);
     dl->PopClipRect();
     return map;
 }

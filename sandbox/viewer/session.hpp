@@ -55,6 +55,9 @@ struct CanvasState {
     int dragged_handle = -1;       // index into Scene::handles while one is dragged
     glm::dvec2 grab_offset{0, 0};  // handle minus mouse, in world units: no jump on grab
     bool panning = false;
+    // A panel's handles (Panel::handles): the panel (index into Scene::panels) whose handle is
+    // dragged, or hovered, and which one; -1 when none.
+    int panel_dragged = -1, panel_hot = -1, panel_hot_handle = -1;
     Camera3 camera3;  // the 3D canvas's, fitted together with the 2D view
 };
 

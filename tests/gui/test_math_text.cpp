@@ -38,6 +38,8 @@ TEST_CASE("math text: LaTeX becomes readable Unicode", "[gui][math]") {
         {"(1-t)^{n-i}", "(1−t)ⁿ⁻ⁱ"},
         {"M^T", "Mᵀ"},
         {"L^*", "L*"},
+        {R"(23.08^\circ)", "23.08°"},  // degrees, never "^∘"
+        {R"(\cos\frac{23.08^\circ}{2})", "cos 23.08°/2"},
         {"P_{1}^{2}", "P₁²"},
         {"e^{max}", "e^(max)"},
         // relations, operators, arrows

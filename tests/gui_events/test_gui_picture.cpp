@@ -211,3 +211,38 @@ TEST_CASE("gui picture: the grid's lines are drawn whole", "[gui-events][picture
     }
     CHECK(lines >= 5);
 }
+
+TEST_CASE("gui picture: a handle in an image panel is dragged from pixel to pixel",
+          "[gui-events][picture]") {
+    Driver d;
+    choose(d, "ray-tracer");
+    const cg::Lesson* lesson = d.session().lessons.for_algorithm("ray-tracer");
+    REQUIRE(lesson);
+    // A preset that traces one pixel's ray tree.
+    const auto preset = std::find_if(lesson->presets.begin(), lesson->presets.end(), [](auto& p) {
+        const cg::json& st = p.input.value("stepping", cg::json::object());
+        return st.value("granularity", "") == "ray-tree" && st.contains("pixel");
+    });
+    REQUIRE(preset != lesson->presets.end());
+    d.session().load_preset(*preset);
+    d.frames(3);
+    const cg::json before = d.session().input["stepping"]["pixel"];
+    const LayoutRecord r = layout(d);
+    const LayoutRecord::Panel& image = view_of(r, ViewKind::Image);
+    const int width = d.session().input["camera"]["size"][0].get<int>();
+    const double cell = (image.content.max.x - image.content.min.x) / width;
+    CAPTURE(before.dump(), cell);
+    REQUIRE(cell >= 4);
+    const glm::dvec2 at = Driver::centre(d.widget("handle:pixel"));
+    CHECK(image.content.contains(at));
+    // Three pixels right and two up, the mouse a little off the centres.
+    d.drag(at, at + glm::dvec2(3.3 * cell, -2.2 * cell));
+    const cg::json after = d.session().input["stepping"]["pixel"];
+    CAPTURE(after.dump());
+    CHECK(after[0].get<double>() == before[0].get<double>() + 3);
+    CHECK(after[1].get<double>() == before[1].get<double>() + 2);
+    CHECK(d.session().input_error.empty());
+    // The tree now is that pixel's, and the handle is drawn on it.
+    CHECK(glm::distance(Driver::centre(d.widget("handle:pixel")),
+                        at + glm::dvec2(3 * cell, -2 * cell)) < 2);
+}

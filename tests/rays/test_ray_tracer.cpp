@@ -874,6 +874,11 @@ TEST_CASE("ray-tracer: the picture shows the image, the scene and the ray tree",
         CHECK(image.grids[0].width == 48);
         REQUIRE(image.polygons.size() == 1);
         CHECK(image.polygons[0].style.role == cg::Role::Active);
+        // The pixel is a handle at its centre, dragged from centre to centre.
+        REQUIRE(image.handles.size() == 1);
+        CHECK(image.handles[0].cell_centres);
+        CHECK(image.handles[0].x_field == "/stepping/pixel/0");
+        CHECK(image.polygons[0].points[0] + glm::dvec2(0.5) == image.handles[0].p);
         CHECK(pic.panels[1].kind == cg::PanelKind::Diagram);  // the ray tree
         CHECK(pic.has_3d());
         CHECK(pic.focus3.size() == 1);  // the camera frames the step's rays

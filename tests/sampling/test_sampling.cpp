@@ -347,4 +347,15 @@ TEST_CASE("sampling: determinism, resumability and the picture", "[sampling]") {
     int filled = 0;
     for (auto v : g.rgba) filled += v != 0xdde8f5ffu;
     CHECK(filled == 2 * 16);
+    CHECK(s2.panels[0].handles.empty());  // only an edge has a point to drag
+    // An edge's point is a handle in the first image (the point-sampled one).
+    auto edge = a.create(cg::parse_json(
+        R"({"image": {"type": "edge", "point": [5.5, 4], "angle": 30}, "width": 16, "height": 12})"));
+    cg::Scene s3;
+    edge->draw(s3);
+    REQUIRE(s3.panels.size() == 2);
+    REQUIRE(s3.panels[0].handles.size() == 1);
+    CHECK(s3.panels[0].handles[0].p == glm::dvec2(5.5, 4));
+    CHECK(s3.panels[0].handles[0].x_field == "/image/point/0");
+    CHECK(s3.panels[1].handles.empty());
 }
