@@ -168,21 +168,37 @@ void draw_log(Session& s, float height) {
     const float wrap = ImGui::GetContentRegionAvail().x;
     const bool was_at_bottom = ImGui::GetScrollY() >= ImGui::GetScrollMaxY() - 1;
     std::size_t clicked = 0;
+    // Wrapping is the log's cost (up to 500 entries): done once for a width, and only the
+    // entries in sight are drawn, the others stand in as empty space of their height.
+    const float font = ImGui::GetFontSize();
+    if (log.wrapped.size() != log.steps.size() || log.wrapped_width != wrap ||
+        log.wrapped_font != font) {
+        log.wrapped.clear(), log.heights.clear();
+        for (std::size_t i = 0; i < log.steps.size(); ++i) {
+            // Find the bug hides the narration: the event stands for it.
+            const StepInfo& entry = log.steps[i];
+            const std::string said =
+                entry.narration.empty() ? "(" + entry.event + ")" : entry.narration;
+            log.wrapped.push_back(wrap_at_spaces(ImGui::GetFont(), font,
+                                                 std::to_string(log.first + i) + ".  " + said,
+                                                 wrap));
+            log.heights.push_back(ImGui::CalcTextSize(log.wrapped.back().c_str()).y);
+        }
+        log.wrapped_width = wrap, log.wrapped_font = font;
+    }
     ImDrawList* dl = ImGui::GetWindowDrawList();
     for (std::size_t i = 0; i < log.steps.size(); ++i) {
         const std::size_t step = log.first + i;
-        // Find the bug hides the narration: the event stands for it.
-        const StepInfo& entry = log.steps[i];
-        const std::string said =
-            entry.narration.empty() ? "(" + entry.event + ")" : entry.narration;
-        const std::string text = wrap_at_spaces(ImGui::GetFont(), ImGui::GetFontSize(),
-                                                std::to_string(step) + ".  " + said, wrap);
-        const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        const ImVec2 size(wrap, log.heights[i]);
+        if (!ImGui::IsRectVisible(size)) {
+            ImGui::Dummy(size);
+            continue;
+        }
         ImGui::PushID(static_cast<int>(i));
         const ImVec2 at = ImGui::GetCursorScreenPos();
         if (ImGui::Selectable("##entry", step == log.index, 0, ImVec2(0, size.y))) clicked = step;
-        dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, ImGui::GetColorU32(ImGuiCol_Text),
-                    text.c_str());
+        dl->AddText(ImGui::GetFont(), font, at, ImGui::GetColorU32(ImGuiCol_Text),
+                    log.wrapped[i].c_str());
         ImGui::PopID();
     }
     if (log.steps.empty()) ImGui::TextDisabled("The narration of each step appears here.");

@@ -168,6 +168,7 @@ const NarrationLog& Session::log() {
     log_.first =
         log_.index > NarrationLog::kMaxEntries ? log_.index - NarrationLog::kMaxEntries + 1 : 1;
     log_.steps.clear();
+    log_.wrapped.clear(), log_.heights.clear();
     if (timeline && log_.index > 0) log_.steps = timeline->steps(log_.first, log_.index);
     // Find the bug: the planted working in place of the real one.
     if (study.mode == Mode::Bug && study.bug.bug)

@@ -43,6 +43,11 @@ struct NarrationLog {
     std::size_t index = 0;                                          // the step it was built for
     std::size_t first = 1;                                          // the step number of steps[0]
     std::vector<StepInfo> steps;
+    // The entries as the log panel drew them: wrapped for `wrapped_width` at `wrapped_font`
+    // pixels, and their heights; rebuilt when the log, the width or the font changes.
+    mutable std::vector<std::string> wrapped;
+    mutable std::vector<float> heights;
+    mutable float wrapped_width = -1, wrapped_font = -1;
 };
 
 struct LayoutRecord;

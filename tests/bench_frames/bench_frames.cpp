@@ -109,10 +109,13 @@ void time_frames(benchmark::State& state, std::vector<std::unique_ptr<Session>>&
     std::size_t k = 0;
     const double cpu_before = process_cpu_ms();
     double vertices = 0, draws = 0;
+    double worst = -1, worst_session = 0;
     for (auto _ : state) {
-        const double ms = frame_ms(*sessions[k++ % sessions.size()]);
+        const std::size_t at = k++ % sessions.size();
+        const double ms = frame_ms(*sessions[at]);
         state.SetIterationTime(ms / 1000);
         times.push_back(ms);
+        if (ms > worst) worst = ms, worst_session = static_cast<double>(at);
         const ImDrawData* dd = ImGui::GetDrawData();
         vertices = std::max(vertices, double(dd->TotalVtxCount));
         int cmds = 0;
@@ -128,6 +131,9 @@ void time_frames(benchmark::State& state, std::vector<std::unique_ptr<Session>>&
     state.counters["median_ms"] = times[times.size() / 2];
     state.counters["worst_ms"] = times.back();
     state.counters["sessions"] = static_cast<double>(sessions.size());
+    // Which session the worst frame was (a lesson's: preset worst_session / 3, at its first,
+    // middle or last step as worst_session % 3), to look into.
+    state.counters["worst_session"] = worst_session;
     state.SetLabel(renderer());
 }
 
