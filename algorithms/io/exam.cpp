@@ -9,16 +9,34 @@ namespace cg {
 
 bool has_exam(const Algorithm& a) { return static_cast<bool>(a.exam_input); }
 
+// The exam's question and answers when the input is of the shape the generator writes (every
+// answer field is in the run's result); for any other input — an algorithm's example, a
+// lesson's preset, the student's own — a plain "run it" with every field of the result, as
+// the generator's question would speak of fields the run does not have.
 ExamProblem exam_for_input(const Algorithm& a, const json& input) {
     ExamProblem p;
     p.algorithm = a.spec->id;
     p.input = input;
-    p.question = a.question ? a.question(input) : "Run " + a.spec->title + " on the input below.";
-    p.answers = a.answer_fields(input);
     auto run = a.create(input);
     while (!run->done()) run->step(nullptr);
     const json result = a.result(*run);
     p.expected = json::object();
+    p.question = "Run " + a.spec->title + " on the input below.";
+    // A generator's question reads the input as the generator writes it (the first cell's
+    // values, boid 0): one that finds it otherwise says so by throwing, and the plain question
+    // stands.
+    try {
+        const std::vector<std::string> fields = a.answer_fields(input);
+        const bool exam_shaped =
+            std::all_of(fields.begin(), fields.end(), [&](const std::string& f) {
+                return result.contains(json::json_pointer("/" + f));
+            });
+        if (!exam_shaped) return p;
+        if (a.question) p.question = a.question(input);
+        p.answers = fields;
+    } catch (const std::exception&) {
+        return p;
+    }
     for (const std::string& field : p.answers) p.expected[field] = answer_value(result, field);
     return p;
 }

@@ -49,8 +49,10 @@ MarchingCubes::Input MarchingCubes::exam_input(Rng& rng) {
 
 std::string MarchingCubes::question(const Input& in) {
     const auto& v = in.values;
-    const double f[8] = {v[0][0][0], v[0][0][1], v[0][1][1], v[0][1][0],
-                         v[1][0][0], v[1][0][1], v[1][1][1], v[1][1][0]};
+    // at(): an input given as a formula has no values, and the question is not for it.
+    const double f[8] = {v.at(0).at(0).at(0), v.at(0).at(0).at(1), v.at(0).at(1).at(1),
+                         v.at(0).at(1).at(0), v.at(1).at(0).at(0), v.at(1).at(0).at(1),
+                         v.at(1).at(1).at(1), v.at(1).at(1).at(0)};
     std::string values;
     for (int k = 0; k < 8; ++k) values += (k ? ", f" : "f") + std::to_string(k) + " = " + num(f[k]);
     return "A marching-cubes cube has corners 0 = (0, 0, 0), 1 = (1, 0, 0), 2 = (1, 1, 0), "

@@ -44,10 +44,11 @@ MarchingSquares::Input MarchingSquares::exam_input(Rng& rng) {
 }
 
 std::string MarchingSquares::question(const Input& in) {
-    const auto& v = in.values;
+    const auto& v = in.values;  // at(): a formula's input has none; the question is not for it
     return "A marching-squares cell has corners 0 = (0, 0), 1 = (1, 0), 2 = (1, 1) and "
-           "3 = (0, 1) with field values f0 = " + num(v[0][0]) + ", f1 = " + num(v[0][1]) +
-           ", f2 = " + num(v[1][1]) + ", f3 = " + num(v[1][0]) + ", and iso = " + num(in.iso) +
+           "3 = (0, 1) with field values f0 = " + num(v.at(0).at(0)) +
+           ", f1 = " + num(v.at(0).at(1)) + ", f2 = " + num(v.at(1).at(1)) +
+           ", f3 = " + num(v.at(1).at(0)) + ", and iso = " + num(in.iso) +
            ". A corner is inside when f < iso; bit k of the case index is 1 when corner k is "
            "inside (case = b0 + 2·b1 + 4·b2 + 8·b3). Give the case index (cases/0/0) and the "
            "points where the contour crosses the cell's edges by linear interpolation "

@@ -204,6 +204,43 @@ TEST_CASE("worked: the Liang-Barsky worked example matches its golden file", "[w
     CHECK(doc["result"]["q1"] == cg::json::array({2.0, 4.0}));
 }
 
+TEST_CASE("worked: every algorithm's example, lesson preset and exam seed has a worked example",
+          "[worked]") {
+    const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", registry());
+    for (const cg::Algorithm& a : registry().all()) {
+        CAPTURE(a.spec->id);
+        std::vector<std::pair<std::string, cg::json>> inputs{{"example", a.example()}};
+        if (const cg::Lesson* l = lib.for_algorithm(a.spec->id))
+            for (const auto& p : l->presets) inputs.emplace_back(p.name, p.input);
+        for (const auto& [name, input] : inputs) {
+            CAPTURE(name);
+            // An input not of the exam's shape (radiosity's example gathers, so it has no first
+            // shot to ask about) is worked as a plain run: every field of its result answered.
+            const cg::ExamProblem p = cg::exam_for_input(a, input);
+            const cg::WorkedExample w = cg::work(a, p);
+            const std::string md = cg::worked_markdown(w);
+            CHECK(md.find("**Answer.**") != std::string::npos);
+            if (p.answers.empty()) CHECK(md.find("| " + w.result.begin().key() + " |") != std::string::npos);
+            for (const std::string& f : p.answers) CHECK(p.expected.contains(f));
+        }
+        // The generator's own problems keep their question and answers.
+        if (cg::has_exam(a))
+            for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+                const cg::ExamProblem made = cg::make_exam(a, seed);
+                const cg::ExamProblem again = cg::exam_for_input(a, made.input);
+                CHECK(again.question == made.question);
+                CHECK(again.answers == made.answers);
+            }
+    }
+    // Through the CLI, the two that aborted on their own examples (exit 134).
+    for (const char* id : {"radiosity", "shadow-map"}) {
+        CAPTURE(id);
+        const auto r = cg::test::cgsandbox({"worked", id});
+        CHECK(r.exit_code == 0);
+        CHECK_THAT(r.out, Catch::Contains("**Answer.**"));
+    }
+}
+
 TEST_CASE("worked: an unknown preset lists the known ones", "[worked][errors]") {
     auto r = cg::test::cgsandbox({"worked", "liang-barsky", "--preset", "nope"});
     CHECK(r.exit_code == 2);
