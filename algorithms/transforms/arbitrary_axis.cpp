@@ -97,7 +97,7 @@ const Spec& ArbitraryAxis::spec() {
         {
             {"choose-axis", "the coordinate axis closest to a is chosen to carry the rotation"},
             {"to-plane", "a is turned about the second axis into a coordinate plane (angle φ)"},
-            {"already-in-plane", "a already lies in that plane: φ = 0 and the first turn is I"},
+            {"already-in-plane", "a already lies in that plane, a_i > 0: φ = 0 and the first turn is I"},
             {"to-axis", "a is turned about the third axis onto the chosen axis (angle γ)"},
             {"already-on-axis", "a already points along the chosen axis: γ = 0, this turn is I"},
             {"rotate", "the rotation by θ about the chosen coordinate axis"},
