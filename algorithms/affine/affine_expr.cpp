@@ -534,6 +534,34 @@ std::string Tree::span(const Node& n) const {
     return source.substr(b, e - b);
 }
 
+// The course writes products without a space: tQ is t times the point Q. An undeclared name
+// made of one letter and a declared point or vector reads as that letter, a scalar, times it
+// (tQ, sB, kv, tP_i); when the letter is itself a declared point or vector (PQ) the name is
+// refused, naming the product it would be, never taken silently as a scalar. Longer scalar
+// names are written apart: "alpha P".
+bool split_products(std::vector<Token>& toks, const Names& names, ParseError& err) {
+    auto declared = [&](const std::string& n) { return names.is_point(n) || names.is_vector(n); };
+    std::vector<Token> out;
+    for (const Token& t : toks) {
+        if (t.t != T::Ident || t.text.size() < 2 || declared(t.text) || t.text == "dot" ||
+            !declared(t.text.substr(1)) || !is_letter(static_cast<unsigned char>(t.text[1]))) {
+            out.push_back(t);
+            continue;
+        }
+        const std::string letter = t.text.substr(0, 1), thing = t.text.substr(1);
+        if (declared(letter)) {
+            err = {t.begin + 1, "\"" + t.text + "\" is not declared: it reads as " + letter +
+                                    "·" + thing + ", a product of two declared names (write " +
+                                    "the product with · or a space, or declare " + t.text + ")"};
+            return false;
+        }
+        out.push_back({T::Ident, 0, letter, t.begin, t.begin + 1});
+        out.push_back({T::Ident, 0, thing, t.begin + 1, t.end});
+    }
+    toks = std::move(out);
+    return true;
+}
+
 bool parse(const std::string& text, const Names& names, Tree& tree, ParseError& error) {
     tree = Tree{};
     tree.source = text;
@@ -543,7 +571,7 @@ bool parse(const std::string& text, const Names& names, Tree& tree, ParseError& 
         return false;
     }
     std::vector<Token> toks;
-    if (!lex(cs, toks, error)) return false;
+    if (!lex(cs, toks, error) || !split_products(toks, names, error)) return false;
     if (toks.size() == 1) {
         error = {1, "the expression is empty"};
         return false;

@@ -62,6 +62,12 @@ TEST_CASE("affine-combination: the course's expressions, decided by hand",
         {"A − B + 2v", "vector"},
         {"A + B", "invalid"},
         {"(1 − s)A + s B", "point"},
+        // Products written as the course writes them, without a space: tQ is t times Q.
+        {"(1 − s)A + sB", "point"},
+        {"(1 − t)A + tB", "point"},
+        {"tv", "vector"},
+        {"sA − sB", "vector"},
+        {"(1 − t)A_0 + tA_1", "point"},
         {"A · B", "invalid"},
         {"(A − B) × v", "vector"},
         {"A + v", "point"},
@@ -360,6 +366,11 @@ TEST_CASE("affine-combination: parse errors give the character position",
           "expressions[1]: at character 3: expected a subscript after '_': a whole number, a name "
           "or {…}");
     CHECK(error("sin + P").find("reserved word") != std::string::npos);
+    // Two declared names run together are refused, naming the product they would be.
+    CHECK(error("PQ") ==
+          "expressions[1]: at character 1: \"PQ\" is not declared: it reads as P·Q, a product of "
+          "two declared names (write the product with · or a space, or declare PQ)");
+    CHECK(error("(1 − t)P + tQ") == "no error");
     // Unicode operators count as one character each.
     CHECK(error("P − Q · · v") ==
           "expressions[1]: at character 9: expected a number, a name or '('");
