@@ -156,6 +156,16 @@ TEST_CASE("bezier-spline: continuity of constructed joints", "[curves][bezier-sp
         CHECK(r.joints[0].c1);
         CHECK(r.joints[0].g1);
         CHECK_FALSE(r.joints[0].beta.has_value());
+        // ... and the curve turns a corner there all the same (the lesson says so): the
+        // tangent comes from the points further in, (2, 0) − (1, 1) against (3, 1) − (2, 0).
+        const dvec3 left = P(2, 0) - P(1, 1), right = P(3, 1) - P(2, 0);
+        CHECK(glm::length(glm::cross(left, right)) > 0.5);
+    }
+    SECTION("a zero end vector beside one that is not: no common direction, C0 only") {
+        const auto r = run(
+            segments({{P(0, 0), P(1, 1), P(2, 0), P(2, 0)}, {P(2, 0), P(3, 0), P(3, 1), P(4, 0)}}));
+        CHECK(BezierSpline::level(r.joints[0]) == "C0");
+        CHECK_FALSE(r.joints[0].g1);
     }
 }
 
