@@ -417,6 +417,44 @@ TEST_CASE("radiosity: triangles subdivide into n² triangles of the same total a
     }
 }
 
+TEST_CASE("radiosity: the Cornell presets gather and shoot to the same floor; a coarse hemicube "
+          "parts them, as the lesson says",
+          "[radiosity]") {
+    // The floor's red channel, area-weighted over its patches (surface 0, y = 0).
+    auto floor = [](const cg::json& input) {
+        const Input in = cg::test::input_of<Radiosity>("radiosity", input);
+        const auto r = Radiosity::compute(in);
+        CHECK(r.converged);
+        double b = 0, area = 0;
+        for (std::size_t k = 0; k < r.radiosity.size(); ++k)
+            if (r.scene->surface[k] == 0) b += r.scene->area[k] * r.radiosity[k].x, area += r.scene->area[k];
+        return b / area;
+    };
+    auto preset = [](const std::string& name) {
+        for (const auto& p : lesson().presets)
+            if (p.name == name) return p.input;
+        FAIL("no preset " << name);
+        return cg::json();
+    };
+    const cg::json gs = preset("Cornell box, Gauss-Seidel");
+    const double gathered = floor(gs);
+    const double shot = floor(preset("Cornell box, progressive refinement"));
+    const double monte_carlo = floor(preset("Cornell box, Monte Carlo form factors"));
+    CHECK(floor(preset("Cornell box, Jacobi (compare the sweeps)")) == Approx(gathered).epsilon(0.01));
+    // The lesson's numbers: about 0.33, 0.35 and 0.36, within a few percent of each other.
+    CHECK(gathered == Approx(0.33).margin(0.005));
+    CHECK(shot == Approx(0.35).margin(0.005));
+    CHECK(monte_carlo == Approx(0.36).margin(0.005));
+    CHECK(std::abs(gathered - shot) / shot < 0.08);
+    // Resolution 8 on one point: the floor gathers about 0.79, more than twice what is shot.
+    cg::json coarse = gs;
+    coarse["form_factors"]["resolution"] = 8;
+    coarse["form_factors"]["samples"] = 1;
+    const double aliased = floor(coarse);
+    CHECK(aliased == Approx(0.79).margin(0.005));
+    CHECK(aliased > 2 * shot);
+}
+
 TEST_CASE("radiosity: replay on the example and the presets, run-to-end is compute",
           "[radiosity]") {
     const cg::Algorithm& a = cg::test::algorithm("radiosity");
