@@ -75,8 +75,17 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
     const json& sections = non_empty_array(r, "sections");
     for (std::size_t i = 0; i < sections.size(); ++i) {
         Reader s(sections[i], "sections[" + std::to_string(i) + "]");
-        s.only({"title", "text"});
-        l.sections.push_back({non_empty(s, "title"), non_empty(s, "text")});
+        s.only({"title", "text", "kind"});
+        LessonSection section{non_empty(s, "title"), non_empty(s, "text")};
+        if (s.has("kind")) {
+            // What an exam-minded section is: the question worked by hand, the common mistakes,
+            // or the advantages and limits the course asks to compare.
+            section.kind = non_empty(s, "kind");
+            if (section.kind != "by-hand" && section.kind != "mistakes" && section.kind != "compare")
+                throw InputError(s.field("kind"), "must be \"by-hand\", \"mistakes\" or "
+                                                  "\"compare\" (got \"" + section.kind + "\")");
+        }
+        l.sections.push_back(std::move(section));
     }
 
     if (r.has("events")) {

@@ -26,6 +26,7 @@ struct LessonPreset {
 struct LessonSection {
     std::string title;
     std::string text;
+    std::string kind;  // "" (teaching), "by-hand", "mistakes" or "compare"
 };
 
 struct LessonEventNote {

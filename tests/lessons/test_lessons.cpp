@@ -99,11 +99,12 @@ TEST_CASE("lessons: broken files give clear errors and the others still load", "
     variant("f-bad-weight", [](cg::json& j) { j["exam"]["weight"] = "enormous"; });
     variant("g-no-presets", [](cg::json& j) { j["presets"] = cg::json::array(); });
     variant("h-extra-field", [](cg::json& j) { j["colour"] = "red"; });
+    variant("i-bad-kind", [](cg::json& j) { j["sections"][0]["kind"] = "trivia"; });
 
     const cg::LessonLibrary lib = cg::load_lessons(dir.string(), registry());
     REQUIRE(lib.lessons.size() == 1);
     CHECK(lib.lessons[0].id == "liang-barsky");
-    REQUIRE(lib.errors.size() == 8);
+    REQUIRE(lib.errors.size() == 9);
     auto error_for = [&](const std::string& file) {
         for (const auto& e : lib.errors)
             if (e.find(file) != std::string::npos) return e;
@@ -117,12 +118,15 @@ TEST_CASE("lessons: broken files give clear errors and the others still load", "
     CHECK_THAT(error_for("f-bad-weight.json"), Catch::Contains("exam.weight: must be high, medium, low or none"));
     CHECK_THAT(error_for("g-no-presets.json"), Catch::Contains("presets: must be a non-empty list"));
     CHECK_THAT(error_for("h-extra-field.json"), Catch::Contains("colour: is not a known field"));
+    CHECK_THAT(error_for("i-bad-kind.json"),
+               Catch::Contains("sections[0].kind: must be \"by-hand\", \"mistakes\" or \"compare\" "
+                               "(got \"trivia\")"));
 
     // The CLI lists the good one and reports each broken file on stderr.
     auto r = cg::test::run_process({"env", "CGSANDBOX_LESSONS=" + dir.string(), CG_BINARY, "lessons", "--check"});
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.out, Catch::StartsWith("liang-barsky\t"));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 8);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 9);
 }
 
 TEST_CASE("exam: 1,000 seeds per algorithm give valid problems whose answers match the result", "[exam]") {
