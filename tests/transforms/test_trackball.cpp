@@ -496,3 +496,40 @@ TEST_CASE("trackball: exam problems have exact sphere points and grade their own
     CHECK(outside > 30);
     CHECK(loops > 10);
 }
+
+TEST_CASE("trackball: the doubled angle is what closes the arcball's loops (the lesson's numbers)",
+          "[transforms][arcball]") {
+    namespace tb = cg::trackball;
+    const dvec2 vp(400, 300);
+    // The angle a quaternion turns by, in degrees.
+    auto degrees = [](glm::dquat q) {
+        return glm::degrees(2 * std::acos(std::min(1.0, std::abs(q.w))));
+    };
+    // A drag's rotation: Shoemake's q = t s* per pair, or the rotation that merely carries s
+    // onto t (by α, not 2α: the half-way quaternion, normalise(1 + t s*)).
+    auto drag = [&](const std::vector<dvec2>& samples, bool doubled) {
+        glm::dquat total(1, 0, 0, 0);
+        for (std::size_t k = 1; k < samples.size(); ++k) {
+            glm::dquat q = tb::arcball(tb::to_ball(samples[k - 1], vp), tb::to_ball(samples[k], vp));
+            if (!doubled) q = glm::normalize(glm::dquat(1 + q.w, q.x, q.y, q.z));
+            total = q * total;
+        }
+        return degrees(total);
+    };
+    auto square = [](double side) {
+        return std::vector<dvec2>{{200, 150}, {200 + side, 150}, {200 + side, 150 + side},
+                                  {200, 150 + side}, {200, 150}};
+    };
+    // The lesson's preset is the 30-pixel square.
+    CHECK(drag(square(30), true) < 1e-9);
+    CHECK(drag(square(30), false) == Approx(2.34).margin(0.005));   // "2.3°"
+    CHECK(drag(square(90), true) < 1e-9);
+    CHECK(drag(square(90), false) == Approx(26.39).margin(0.005));  // "26.4°"
+    // Twice as far per pixel as the virtual sphere near the centre ...
+    const tb::BallPoint s = tb::to_ball({200, 150}, vp), t = tb::to_ball({201, 150}, vp);
+    CHECK(degrees(tb::arcball(s, t)) / degrees(tb::virtual_sphere(s, t)) == Approx(2).epsilon(1e-4));
+    // ... so from the centre to the rim is half a turn, and rim to rim a full one (q = −1).
+    CHECK(degrees(tb::arcball(tb::to_ball({200, 150}, vp), tb::to_ball({350, 150}, vp))) ==
+          Approx(180));
+    CHECK(tb::arcball(tb::to_ball({50, 150}, vp), tb::to_ball({350, 150}, vp)).w == Approx(-1));
+}
