@@ -188,6 +188,7 @@ void LiangBarsky::advance(State& s) {
                     s.t_leave = std::min(s.t_leave, s.r_k);
                 }
             }
+            s.tested[std::size_t(k - 1)] = {k, s.p_k, s.q_k, s.r_k, s.verdict};
             const bool reject = s.verdict == Verdict::ParallelOutside || s.t_enter > s.t_leave;
             s.phase = reject ? Phase::Reject : (k == 4 ? Phase::Accept : Phase::Edge);
             return;
@@ -296,6 +297,7 @@ LiangBarsky::Result LiangBarsky::result(const State& s) {
         r.q0 = point_at(s.in, s.t_enter);
         r.q1 = point_at(s.in, s.t_leave);
     }
+    r.edges.assign(s.tested.begin(), s.tested.begin() + s.k);
     return r;
 }
 
@@ -306,8 +308,11 @@ LiangBarsky::Result LiangBarsky::clip(const Input& in) {
     const double q[4] = {in.p0.x - in.window.xmin, in.window.xmax - in.p0.x,
                          in.p0.y - in.window.ymin, in.window.ymax - in.p0.y};
     double t0 = 0, t1 = 1;
+    r.edges.reserve(4);
     for (int k = 0; k < 4; ++k) {
         if (p[k] == 0) {
+            r.edges.push_back({k + 1, p[k], q[k], 0,
+                               q[k] < 0 ? Verdict::ParallelOutside : Verdict::ParallelInside});
             if (q[k] < 0) {
                 r.t_enter = t0, r.t_leave = t1;
                 return r;
@@ -315,6 +320,7 @@ LiangBarsky::Result LiangBarsky::clip(const Input& in) {
             continue;
         }
         const double rk = q[k] / p[k];
+        r.edges.push_back({k + 1, p[k], q[k], rk, p[k] < 0 ? Verdict::Entering : Verdict::Leaving});
         if (p[k] < 0) t0 = std::max(t0, rk);
         else t1 = std::min(t1, rk);
         if (t0 > t1) {

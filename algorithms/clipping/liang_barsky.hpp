@@ -18,6 +18,7 @@
 // Boundaries count as inside: a segment touching the window at one point is visible there.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -40,15 +41,25 @@ struct LiangBarsky {
         glm::dvec2 p0{0}, p1{0};
         bool operator==(const Input&) const = default;
     };
+    enum class Phase : std::uint8_t { Setup, Edge, Reject, Accept, Done };
+    enum class Verdict : std::uint8_t { None, Entering, Leaving, ParallelInside, ParallelOutside };
+
+    // One edge's test, as the student writes it in the table: p_k, q_k, r_k = q_k / p_k (0 when
+    // p_k = 0) and what the line does there.
+    struct EdgeTest {
+        int k = 0;  // 1 left, 2 right, 3 bottom, 4 top
+        double p = 0, q = 0, r = 0;
+        Verdict verdict = Verdict::None;
+        bool operator==(const EdgeTest&) const = default;
+    };
+
     struct Result {
         bool visible = false;
         double t_enter = 0, t_leave = 1;  // at the end (or at the moment of rejection)
         std::optional<glm::dvec2> q0, q1;  // the visible part, when visible
+        std::vector<EdgeTest> edges;       // the edges tested, in order, up to a rejection
         bool operator==(const Result&) const = default;
     };
-
-    enum class Phase : std::uint8_t { Setup, Edge, Reject, Accept, Done };
-    enum class Verdict : std::uint8_t { None, Entering, Leaving, ParallelInside, ParallelOutside };
 
     struct State {
         Input in;
@@ -59,6 +70,7 @@ struct LiangBarsky {
         double t_enter = 0, t_leave = 1;
         double p_k = 0, q_k = 0, r_k = 0;
         double t_before = 0;  // the t that edge k's test just changed, before it changed
+        std::array<EdgeTest, 4> tested{};  // edges 1..k's tests
         bool visible = false;
         bool operator==(const State&) const = default;
     };
@@ -74,7 +86,7 @@ struct LiangBarsky {
     // Exam practice (liang_barsky_exam.cpp).
     static Input exam_input(Rng& rng);
     static std::string question(const Input& in);
-    static std::vector<std::string> answer_fields();
+    static std::vector<std::string> answer_fields(const Input& in);
 
     // The same clipping as one straight-line function, for the benchmark's comparison.
     static Result clip(const Input& in);

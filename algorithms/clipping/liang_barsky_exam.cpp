@@ -50,14 +50,27 @@ std::string LiangBarsky::question(const Input& in) {
            " against the window [" + num(w.xmin) + ", " + num(w.xmax) + "] × [" + num(w.ymin) +
            ", " + num(w.ymax) +
            "] with the Liang-Barsky algorithm. For each edge (left, right, bottom, top) give p_k, "
-           "q_k and, where p_k ≠ 0, r_k = q_k / p_k and whether the line enters or leaves there. "
+           "q_k and, where p_k ≠ 0, r_k = q_k / p_k, and what the line does there (enters, leaves, "
+           "parallel inside or parallel outside). "
            "Stop as soon as the segment is rejected. Then give t_enter and t_leave (at the end, or "
            "when rejected), whether any part is visible, and the clipped endpoints Q0 and Q1 "
            "(none if nothing is visible).";
 }
 
-std::vector<std::string> LiangBarsky::answer_fields() {
-    return {"visible", "t_enter", "t_leave", "q0", "q1"};
+// The table first, a row an edge tested (p, q, r where p ≠ 0, what the line does), then the
+// five final values: every number the question asks for is graded.
+std::vector<std::string> LiangBarsky::answer_fields(const Input& in) {
+    static constexpr const char* kEdge[] = {"", "left", "right", "bottom", "top"};
+    std::vector<std::string> fields;
+    for (const EdgeTest& e : clip(in).edges) {
+        const std::string at = std::string("edges/") + kEdge[e.k] + "/";
+        fields.push_back(at + "p");
+        fields.push_back(at + "q");
+        if (e.p != 0) fields.push_back(at + "r");
+        fields.push_back(at + "crossing");
+    }
+    for (const char* f : {"visible", "t_enter", "t_leave", "q0", "q1"}) fields.push_back(f);
+    return fields;
 }
 
 }  // namespace cg

@@ -1,6 +1,9 @@
 // Liang-Barsky's JSON:
 //   input  {"window": {"xmin", "ymin", "xmax", "ymax"}, "p0": [x, y], "p1": [x, y]}
-//   result {"visible", "t_enter", "t_leave", "q0": [x, y] | null, "q1": [x, y] | null}
+//   result {"visible", "t_enter", "t_leave", "q0": [x, y] | null, "q1": [x, y] | null,
+//           "edges": {"left" | "right" | "bottom" | "top": {"p", "q", "r": number | null (p = 0),
+//                     "crossing": "enters" | "leaves" | "parallel inside" | "parallel outside"}}
+//                    (the edges tested, in order, up to a rejection)}
 #include "clipping/liang_barsky.hpp"
 #include "io/registry.hpp"
 
@@ -30,11 +33,28 @@ struct JsonIo<LiangBarsky> {
     }
 
     static json result(const LiangBarsky::Result& r) {
+        // The table a student writes, one row an edge tested: p, q, r (null where p = 0) and
+        // what the line does there.
+        static constexpr const char* kEdge[] = {"", "left", "right", "bottom", "top"};
+        json edges = json::object();
+        for (const LiangBarsky::EdgeTest& e : r.edges) {
+            using V = LiangBarsky::Verdict;
+            const char* crossing = e.verdict == V::Entering  ? "enters"
+                                   : e.verdict == V::Leaving ? "leaves"
+                                   : e.verdict == V::ParallelInside ? "parallel inside"
+                                                                    : "parallel outside";
+            // + 0.0: −dy of a horizontal segment is −0, which a person writes 0.
+            edges[kEdge[e.k]] = {{"p", e.p + 0.0},
+                                 {"q", e.q + 0.0},
+                                 {"r", e.p != 0 ? json(e.r) : json(nullptr)},
+                                 {"crossing", crossing}};
+        }
         return json{{"visible", r.visible},
                     {"t_enter", r.t_enter},
                     {"t_leave", r.t_leave},
                     {"q0", r.q0 ? to_json(*r.q0) : json(nullptr)},
-                    {"q1", r.q1 ? to_json(*r.q1) : json(nullptr)}};
+                    {"q1", r.q1 ? to_json(*r.q1) : json(nullptr)},
+                    {"edges", std::move(edges)}};
     }
 
     static json example() {

@@ -79,7 +79,15 @@ bool answer_matches(const json& expected, const json& given, double tolerance) {
                 return false;
         return true;
     }
-    return expected == given;  // booleans, strings, null
+    if (expected.is_string() && given.is_string()) {  // words: "enters" is "Enters"
+        auto lower = [](std::string s) {
+            std::transform(s.begin(), s.end(), s.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            return s;
+        };
+        return lower(expected.get<std::string>()) == lower(given.get<std::string>());
+    }
+    return expected == given;  // booleans, null
 }
 
 namespace {

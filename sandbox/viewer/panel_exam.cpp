@@ -106,6 +106,112 @@ const FieldGrade* grade_of(const Session& s, const std::string& field) {
     return it == s.exam.grades.end() ? nullptr : &*it;
 }
 
+// A run of answer fields a/row/column with the same a: drawn as a table, a row per row name
+// and a column per column name, in the order the fields come.
+struct TableGroup {
+    std::size_t first = 0, last = 0;  // indices into the answers, inclusive
+    std::string name;                 // a
+    std::vector<std::string> rows, columns;
+};
+
+std::vector<std::string> split_path(const std::string& f) {
+    std::vector<std::string> parts;
+    std::size_t at = 0;
+    for (std::size_t slash; (slash = f.find('/', at)) != std::string::npos; at = slash + 1)
+        parts.push_back(f.substr(at, slash - at));
+    parts.push_back(f.substr(at));
+    return parts;
+}
+
+void group_answers(const std::vector<std::string>& answers, std::vector<std::size_t>& single,
+                   std::vector<TableGroup>& tables) {
+    for (std::size_t i = 0; i < answers.size();) {
+        const auto parts = split_path(answers[i]);
+        std::size_t j = i;
+        TableGroup t;
+        while (j < answers.size()) {
+            const auto q = split_path(answers[j]);
+            if (q.size() != 3 || parts.size() != 3 || q[0] != parts[0]) break;
+            if (std::find(t.rows.begin(), t.rows.end(), q[1]) == t.rows.end()) t.rows.push_back(q[1]);
+            if (std::find(t.columns.begin(), t.columns.end(), q[2]) == t.columns.end())
+                t.columns.push_back(q[2]);
+            ++j;
+        }
+        if (j - i >= 2) {
+            t.first = i, t.last = j - 1, t.name = parts[0];
+            tables.push_back(std::move(t));
+            i = j;
+        } else {
+            single.push_back(i++);
+        }
+    }
+}
+
+// The table's boxes; returns whether Enter was pressed in one. Wrong answers say why under it.
+bool draw_answer_table(Session& s, const TableGroup& t) {
+    const ExamProblem& p = s.exam.problem;
+    bool enter = false;
+    ImGui::PushFont(s.fonts.mono);
+    ImGui::TextUnformatted(t.name.c_str());
+    ImGui::PopFont();
+    const ImGuiTableFlags flags = ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerH;
+    std::vector<std::string> why;
+    ImGui::PushID(t.name.c_str());
+    if (ImGui::BeginTable("answer table", static_cast<int>(t.columns.size()) + 1, flags)) {
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed);
+        for (const std::string& c : t.columns)
+            ImGui::TableSetupColumn(c.c_str(), ImGuiTableColumnFlags_WidthStretch,
+                                    c == "crossing" ? 2.0f : 1.0f);
+        ImGui::TableHeadersRow();
+        for (const std::string& row : t.rows) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::AlignTextToFramePadding();
+            ImGui::TextUnformatted(row.c_str());
+            for (const std::string& c : t.columns) {
+                ImGui::TableNextColumn();
+                const std::string field = t.name + "/" + row + "/" + c;
+                const auto it = std::find(p.answers.begin() + static_cast<long>(t.first),
+                                          p.answers.begin() + static_cast<long>(t.last) + 1, field);
+                if (it == p.answers.begin() + static_cast<long>(t.last) + 1) {
+                    ImGui::AlignTextToFramePadding();
+                    ImGui::TextDisabled("—");  // not asked: r where p = 0, say
+                    continue;
+                }
+                const std::size_t i = static_cast<std::size_t>(it - p.answers.begin());
+                const FieldGrade* g = grade_of(s, field);
+                ImGui::PushID(static_cast<int>(i));
+                ImGui::SetNextItemWidth(g ? -ImGui::GetFontSize() * 1.2f : -1);
+                ImGui::InputText("##answer", &s.exam.typed[i]);
+                s.note_widget("answer:" + field);
+                enter = enter || (ImGui::IsItemDeactivated() &&
+                                  ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)));
+                if (g) {
+                    ImGui::SameLine(0, 2);
+                    ImGui::TextColored(im_vec4(g->correct ? kOkText : kErrorText), "%s",
+                                       g->correct ? "✓" : "✗");
+                    if (!g->correct && !g->why.empty()) why.push_back(row + " " + c + ": " + g->why);
+                } else if (s.exam.answers_shown && p.expected.contains(field)) {
+                    why.push_back(row + " " + c + ": " + show(p.expected.at(field)));
+                }
+                ImGui::PopID();
+            }
+        }
+        ImGui::EndTable();
+    }
+    ImGui::PopID();
+    if (!why.empty()) {
+        const bool graded = !s.exam.grades.empty();
+        ImGui::PushFont(s.fonts.small);
+        ImGui::PushStyleColor(ImGuiCol_Text, im_vec4(graded ? kErrorText : kOkText));
+        for (const std::string& w : why) text_wrapped(w);
+        ImGui::PopStyleColor();
+        ImGui::PopFont();
+    }
+    ImGui::Spacing();
+    return enter;
+}
+
 void draw_answers(Session& s) {
     const ExamProblem& p = s.exam.problem;
     ImGui::PushFont(s.fonts.bold);
@@ -114,16 +220,29 @@ void draw_answers(Session& s) {
     // No-break spaces keep each example on one line.
     hint(s,
          "Decimals (0.25, not 1/4) · a point as (x,\u00a0y) · a list as "
-         "[(1,\u00a00),\u00a0(0,\u00a03)] · yes / no · none");
+         "[(1,\u00a00),\u00a0(0,\u00a03)] · yes / no · none · a word as asked (enters)");
+
+    // Fields a/row/column (Liang-Barsky's edges/left/p …) are a table the student writes row by
+    // row; the others one box a line.
+    std::vector<std::size_t> single;
+    std::vector<TableGroup> tables;
+    group_answers(p.answers, single, tables);
 
     ImGui::PushFont(s.fonts.mono);
     float label = 0;
-    for (const std::string& f : p.answers)
-        label = std::max(label, ImGui::CalcTextSize(f.c_str()).x);
+    for (std::size_t i : single) label = std::max(label, ImGui::CalcTextSize(p.answers[i].c_str()).x);
     ImGui::PopFont();
     const float mark = ImGui::GetFontSize() * 1.6f;
     bool enter = false;
+    std::size_t next_table = 0, next_single = 0;
     for (std::size_t i = 0; i < p.answers.size() && i < s.exam.typed.size(); ++i) {
+        if (next_table < tables.size() && tables[next_table].first == i) {
+            enter = draw_answer_table(s, tables[next_table]) || enter;
+            i = tables[next_table++].last;
+            continue;
+        }
+        if (next_single >= single.size() || single[next_single] != i) continue;
+        ++next_single;
         const std::string& field = p.answers[i];
         const FieldGrade* g = grade_of(s, field);
         ImGui::PushID(static_cast<int>(i));

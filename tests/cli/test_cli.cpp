@@ -54,12 +54,25 @@ TEST_CASE("cli: example prints an input that runs", "[cli]") {
 TEST_CASE("cli: run prints the result as one JSON object", "[cli]") {
     auto r = cgsandbox({"run", "liang-barsky", "--input", cg::test::write_temp("good.json", kGood)});
     REQUIRE(r.exit_code == 0);
-    CHECK(r.out == R"({"visible":true,"t_enter":0.25,"t_leave":0.5,"q0":[1.0,3.0],"q1":[2.0,4.0]})" "\n");
+    // The five values, then the table of edges a student writes.
+    CHECK(r.out ==
+          R"({"visible":true,"t_enter":0.25,"t_leave":0.5,"q0":[1.0,3.0],"q1":[2.0,4.0],)"
+          R"("edges":{"left":{"p":-4.0,"q":-1.0,"r":0.25,"crossing":"enters"},)"
+          R"("right":{"p":4.0,"q":5.0,"r":1.25,"crossing":"leaves"},)"
+          R"("bottom":{"p":-4.0,"q":1.0,"r":-0.25,"crossing":"enters"},)"
+          R"("top":{"p":4.0,"q":2.0,"r":0.5,"crossing":"leaves"}}})" "\n");
 
     auto missed = cgsandbox({"run", "liang-barsky", "--input", "-"},
                             R"({"window": {"xmin": 1, "ymin": 1, "xmax": 5, "ymax": 4}, "p0": [0, 5], "p1": [6, 5]})");
     REQUIRE(missed.exit_code == 0);
-    CHECK(missed.out == R"({"visible":false,"t_enter":0.16666666666666666,"t_leave":0.8333333333333334,"q0":null,"q1":null})" "\n");
+    // Parallel to the top edge and above it: rejected there, r null where p = 0.
+    CHECK(missed.out ==
+          R"({"visible":false,"t_enter":0.16666666666666666,"t_leave":0.8333333333333334,)"
+          R"("q0":null,"q1":null,"edges":{"left":{"p":-6.0,"q":-1.0,"r":0.16666666666666666,)"
+          R"("crossing":"enters"},"right":{"p":6.0,"q":5.0,"r":0.8333333333333334,)"
+          R"("crossing":"leaves"},"bottom":{"p":0.0,"q":4.0,"r":null,)"
+          R"("crossing":"parallel inside"},"top":{"p":0.0,"q":-1.0,"r":null,)"
+          R"("crossing":"parallel outside"}}})" "\n");
 }
 
 TEST_CASE("cli: run --trace prints one JSON line per step, then the result", "[cli]") {

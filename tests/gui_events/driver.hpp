@@ -88,11 +88,15 @@ class Driver {
             SDL_Event e{};
             e.type = SDL_MOUSEWHEEL;
             e.wheel.windowID = SDL_GetWindowID(viewer_.window());
-            e.wheel.y = w.box.min.y > w.window.max.y - 1 ? -1 : 1;  // below: down
+            // Below, even in part (cut by the window's bottom edge): down.
+            e.wheel.y = w.box.max.y > w.window.max.y + 1 ? -1 : 1;
             SDL_PushEvent(&e);
             frames(2);
         }
-        INFO("the control \"" << name << "\" cannot be scrolled into sight");
+        const viewer::Session::Widget& w = spot(name);
+        INFO("the control \"" << name << "\" cannot be scrolled into sight (at y "
+                               << w.box.min.y << " to " << w.box.max.y << ", its window's visible "
+                               << "part y " << w.window.min.y << " to " << w.window.max.y << ")");
         REQUIRE(spot(name).visible);
     }
     bool drawn(const std::string& name) { return session().widgets.count(name) > 0; }

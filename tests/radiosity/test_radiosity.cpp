@@ -417,7 +417,7 @@ TEST_CASE("radiosity: triangles subdivide into n² triangles of the same total a
     }
 }
 
-TEST_CASE("radiosity: the Cornell presets gather and shoot to the same floor; a coarse hemicube "
+TEST_CASE("radiosity: the Cornell presets gather and shoot to the same floor: a coarse hemicube "
           "parts them, as the lesson says",
           "[radiosity]") {
     // The floor's red channel, area-weighted over its patches (surface 0, y = 0).
