@@ -385,3 +385,39 @@ TEST_CASE("numbers: no narrated step of any lesson preset prints rounding noise"
     CHECK(noisy == 0);
     CHECK(steps > 10000);
 }
+
+TEST_CASE("lessons: the Liang-Barsky by-hand table is the algorithm's own run", "[lessons][by-hand]") {
+    const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", registry());
+    const cg::Lesson* l = lib.find("liang-barsky");
+    REQUIRE(l);
+    const auto by_hand = std::find_if(l->sections.begin(), l->sections.end(),
+                                      [](const cg::LessonSection& s) { return s.kind == "by-hand"; });
+    REQUIRE(by_hand != l->sections.end());
+    const std::string& text = by_hand->text;
+    const cg::LessonPreset* preset = l->preset("a segment crossing two edges");
+    REQUIRE(preset);
+    const cg::Algorithm& a = *registry().find("liang-barsky");
+    auto run = a.create(preset->input);
+    while (!run->done()) run->step(nullptr);
+    const cg::json r = a.result(*run);
+    // Every row of the table, as the run has it: "p = −4, q = −1, r = 0.25, enters".
+    REQUIRE(r["edges"].size() == 4);
+    for (const auto& [edge, row] : r["edges"].items()) {
+        CAPTURE(edge);
+        const std::string line = "- " + edge + " (";
+        CHECK(text.find(line) != std::string::npos);
+        const std::string cells = "p = " + cg::num(row["p"].get<double>()) +
+                                  ", q = " + cg::num(row["q"].get<double>()) +
+                                  ", r = " + cg::num(row["r"].get<double>()) + ", " +
+                                  row["crossing"].get<std::string>();
+        CHECK(text.find(line) < text.find(cells));
+        CHECK(text.find(cells) != std::string::npos);
+    }
+    // The answer.
+    const glm::dvec2 q0(r["q0"][0].get<double>(), r["q0"][1].get<double>());
+    const glm::dvec2 q1(r["q1"][0].get<double>(), r["q1"][1].get<double>());
+    CHECK(text.find("Q_0 = P(" + cg::num(r["t_enter"].get<double>()) + ") = " + cg::num(q0)) !=
+          std::string::npos);
+    CHECK(text.find("Q_1 = P(" + cg::num(r["t_leave"].get<double>()) + ") = " + cg::num(q1)) !=
+          std::string::npos);
+}
