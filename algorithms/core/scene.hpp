@@ -347,4 +347,19 @@ inline void add_focus(Scene& scene, glm::dvec2 a, glm::dvec2 b, int panel = -1) 
     scene.focus2.push_back({glm::min(a, b), glm::max(a, b), panel});
 }
 
+// Leaves out the 3D faces, segments, points and labels with a coordinate that is not finite:
+// an input near the limits of a double (coordinates of 1e300) can overflow the picture's own
+// arithmetic, and such a primitive has nothing to draw.
+inline void drop_non_finite3(Scene& scene) {
+    const auto bad = [](const glm::dvec3& q) {
+        return !std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z);
+    };
+    std::erase_if(scene.faces3, [&](const Face3& f) {
+        return std::any_of(f.points.begin(), f.points.end(), bad);
+    });
+    std::erase_if(scene.segments3, [&](const Segment3& g) { return bad(g.a) || bad(g.b); });
+    std::erase_if(scene.points3, [&](const Point3& q) { return bad(q.p); });
+    std::erase_if(scene.labels3, [&](const Label3& q) { return bad(q.p); });
+}
+
 }  // namespace cg

@@ -679,17 +679,8 @@ void FormFactor::draw(const State& s, Scene& scene) {
         }
     }
     scene.extent3 = 0;
-    auto finite3 = [](const dvec3& q) {
-        return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
-    };
-    std::erase_if(scene.faces3, [&](const Face3& f) {
-        return f.points.size() < 3 || std::any_of(f.points.begin(), f.points.end(),
-                                                  [&](const dvec3& q) { return !finite3(q); });
-    });
-    std::erase_if(scene.segments3,
-                  [&](const Segment3& g) { return !finite3(g.a) || !finite3(g.b); });
-    std::erase_if(scene.points3, [&](const Point3& q) { return !finite3(q.p); });
-    std::erase_if(scene.labels3, [&](const Label3& q) { return !finite3(q.p); });
+    std::erase_if(scene.faces3, [](const Face3& f) { return f.points.size() < 3; });
+    drop_non_finite3(scene);
 }
 
 }  // namespace cg

@@ -701,14 +701,7 @@ void ProjectiveShadow::draw(const State& s, Scene& scene) {
     }
     // Inputs near the limits of a double (coordinates of 1e300) leave nothing worth drawing
     // where the picture's own arithmetic overflows: such primitives are left out.
-    std::erase_if(scene.faces3, [](const Face3& f) {
-        return std::any_of(f.points.begin(), f.points.end(),
-                           [](const dvec3& q) { return !finite3(q); });
-    });
-    std::erase_if(scene.segments3,
-                  [](const Segment3& g) { return !finite3(g.a) || !finite3(g.b); });
-    std::erase_if(scene.points3, [](const Point3& q) { return !finite3(q.p); });
-    std::erase_if(scene.labels3, [](const Label3& q) { return !finite3(q.p); });
+    drop_non_finite3(scene);
 }
 
 }  // namespace cg

@@ -209,14 +209,7 @@ void ShadowVolume::draw(const State& s, Scene& scene) {
             flo = glm::min(flo, r.hit), fhi = glm::max(fhi, r.hit);
     }
     if (finite3(flo) && finite3(fhi)) add_focus(scene, flo, fhi);
-    std::erase_if(scene.faces3, [](const Face3& f) {
-        return std::any_of(f.points.begin(), f.points.end(),
-                           [](const dvec3& q) { return !finite3(q); });
-    });
-    std::erase_if(scene.segments3,
-                  [](const Segment3& g) { return !finite3(g.a) || !finite3(g.b); });
-    std::erase_if(scene.points3, [](const Point3& q) { return !finite3(q.p); });
-    std::erase_if(scene.labels3, [](const Label3& q) { return !finite3(q.p); });
+    drop_non_finite3(scene);
 }
 
 }  // namespace cg
