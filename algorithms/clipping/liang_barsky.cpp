@@ -335,6 +335,28 @@ LiangBarsky::Result LiangBarsky::clip(const Input& in) {
     return r;
 }
 
+bool LiangBarsky::clip_segment(const Window& w, glm::dvec2& a, glm::dvec2& b) {
+    const glm::dvec2 d = b - a;
+    const double p[4] = {-d.x, d.x, -d.y, d.y};
+    const double q[4] = {a.x - w.xmin, w.xmax - a.x, a.y - w.ymin, w.ymax - a.y};
+    double t0 = 0, t1 = 1;
+    for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0) {
+            if (q[k] < 0) return false;
+            continue;
+        }
+        const double r = q[k] / p[k];
+        if (p[k] < 0)
+            t0 = std::max(t0, r);
+        else
+            t1 = std::min(t1, r);
+        if (t0 > t1) return false;
+    }
+    const glm::dvec2 a0 = a;
+    a = a0 + t0 * d, b = a0 + t1 * d;
+    return true;
+}
+
 void LiangBarsky::draw(const State& s, Scene& scene) {
     const auto& w = s.in.window;
     scene.polygons.push_back(

@@ -90,6 +90,9 @@ struct LiangBarsky {
 
     // The same clipping as one straight-line function, for the benchmark's comparison.
     static Result clip(const Input& in);
+    // The part of segment a–b inside the window, in place (a = Q0, b = Q1; no table, no
+    // allocation): for pictures that clip their own lines. False when none of it is inside.
+    static bool clip_segment(const Window& w, glm::dvec2& a, glm::dvec2& b);
 
 private:
     static void advance(State& s);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clipping/liang_barsky.hpp"
 #include "core/format.hpp"
 #include "shading/shading.hpp"
 
@@ -105,35 +106,13 @@ Polygon2 rectangle(dvec2 lo, dvec2 hi, Style style) {
     return {{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, style, true, false};
 }
 
-// The part of segment a→b inside [0, W] × [0, H] (Liang-Barsky); false when none.
-bool clip_to_image(dvec2& a, dvec2& b, double W, double H) {
-    double t0 = 0, t1 = 1;
-    const dvec2 d = b - a;
-    const double p[4] = {-d.x, d.x, -d.y, d.y}, q[4] = {a.x, W - a.x, a.y, H - a.y};
-    for (int k = 0; k < 4; ++k) {
-        if (p[k] == 0) {
-            if (q[k] < 0) return false;
-            continue;
-        }
-        const double r = q[k] / p[k];
-        if (p[k] < 0)
-            t0 = std::max(t0, r);
-        else
-            t1 = std::min(t1, r);
-    }
-    if (t0 > t1) return false;
-    const dvec2 a0 = a;
-    a = a0 + t0 * d, b = a0 + t1 * d;
-    return true;
-}
-
 // The mesh's edges over an image whose origin is o, clipped to it.
 void mesh_edges(const Input& in, dvec2 o, Scene& scene) {
     if (in.mesh.triangles.size() > 400) return;
     for (const auto& t : in.mesh.triangles)
         for (int m = 0; m < 3; ++m) {
             dvec2 a = xy(in.mesh.vertices[t[m]]), b = xy(in.mesh.vertices[t[(m + 1) % 3]]);
-            if (clip_to_image(a, b, double(in.width), double(in.height)))
+            if (LiangBarsky::clip_segment({0, 0, double(in.width), double(in.height)}, a, b))
                 scene.segments.push_back({o + a, o + b, "", {Role::Construction, 1.0f}, false});
         }
 }

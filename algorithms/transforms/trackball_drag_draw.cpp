@@ -15,6 +15,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "clipping/liang_barsky.hpp"
 #include "core/format.hpp"
 #include "transforms/trackball_drag.hpp"
 
@@ -85,30 +86,6 @@ std::vector<dvec2> clip_to(std::vector<dvec2> poly, const Window& w) {
     return poly;
 }
 
-// The segment a–b clipped to the window (Liang–Barsky); false when none of it is inside.
-bool clip_segment(dvec2& a, dvec2& b, const Window& w) {
-    double t0 = 0, t1 = 1;
-    const dvec2 d = b - a;
-    for (int axis = 0; axis < 2; ++axis)
-        for (const double side : {-1.0, 1.0}) {
-            const double p = side * d[axis];
-            const double q = side < 0 ? a[axis] - w.lo[axis] : w.hi[axis] - a[axis];
-            if (p == 0) {
-                if (q < 0) return false;
-                continue;
-            }
-            const double t = q / p;
-            if (p < 0)
-                t0 = std::max(t0, t);
-            else
-                t1 = std::min(t1, t);
-        }
-    if (t0 > t1) return false;
-    const dvec2 a0 = a;
-    a = a0 + t0 * d, b = a0 + t1 * d;
-    return true;
-}
-
 }  // namespace
 
 template <TrackballKind K>
@@ -162,7 +139,8 @@ void TrackballDrag<K>::draw(const State& st, Scene& scene) {
         const dvec2 corner[4] = {{0, 0}, {vp.x, 0}, vp, {0, vp.y}};
         for (int i = 0; i < 4; ++i) {
             dvec2 a = corner[i], b = corner[(i + 1) % 4];
-            if (clip_segment(a, b, win) && glm::length(b - a) > 0)
+            if (LiangBarsky::clip_segment({win.lo.x, win.lo.y, win.hi.x, win.hi.y}, a, b) &&
+                glm::length(b - a) > 0)
                 scene.segments.push_back({a, b, "", {Role::Window, 2.0f}});
         }
         scene.labels.push_back({{(win.lo.x + win.hi.x) / 2, win.hi.y},

@@ -248,3 +248,26 @@ TEST_CASE("liang-barsky: the picture shows the window, the segment and the kept 
     CHECK(scene.handles.size() == 4);
     CHECK(scene.handles[0].x_field == "/p0/0");
 }
+
+TEST_CASE("liang-barsky: clip_segment, the pictures' clip, agrees with clip on random segments",
+          "[clipping][liang-barsky]") {
+    cg::Rng rng(4488);
+    int visible = 0;
+    for (int trial = 0; trial < 5000; ++trial) {
+        LiangBarsky::Input in;
+        in.window = {rng.uniform(-5, 0), rng.uniform(-5, 0), rng.uniform(0, 5), rng.uniform(0, 5)};
+        in.p0 = {rng.uniform(-8, 8), rng.uniform(-8, 8)};
+        // A quarter of them axis-parallel: the p = 0 rows.
+        in.p1 = trial % 4 == 0 ? glm::dvec2(rng.uniform(-8, 8), in.p0.y)
+                               : glm::dvec2(rng.uniform(-8, 8), rng.uniform(-8, 8));
+        const LiangBarsky::Result r = LiangBarsky::clip(in);
+        glm::dvec2 a = in.p0, b = in.p1;
+        CAPTURE(trial);
+        REQUIRE(LiangBarsky::clip_segment(in.window, a, b) == r.visible);
+        if (!r.visible) continue;
+        ++visible;
+        CHECK(a == *r.q0);
+        CHECK(b == *r.q1);
+    }
+    CHECK(visible > 1000);
+}
