@@ -75,7 +75,7 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
     const json& sections = non_empty_array(r, "sections");
     for (std::size_t i = 0; i < sections.size(); ++i) {
         Reader s(sections[i], "sections[" + std::to_string(i) + "]");
-        s.only({"title", "text", "kind"});
+        s.only({"title", "text", "kind", "preset"});
         LessonSection section{non_empty(s, "title"), non_empty(s, "text")};
         if (s.has("kind")) {
             // What an exam-minded section is: the question worked by hand, the common mistakes,
@@ -84,6 +84,19 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
             if (section.kind != "by-hand" && section.kind != "mistakes" && section.kind != "compare")
                 throw InputError(s.field("kind"), "must be \"by-hand\", \"mistakes\" or "
                                                   "\"compare\" (got \"" + section.kind + "\")");
+        }
+        // A question worked by hand names the preset it works, so that its numbers can be held
+        // to that preset's run (tests/lessons/test_by_hand.cpp) and the viewer can load it.
+        if (section.kind == "by-hand") {
+            if (!s.has("preset"))
+                throw InputError(s.field("preset"), "a \"by-hand\" section names the preset it "
+                                                    "works (one of the lesson's presets)");
+            section.preset = non_empty(s, "preset");
+            if (!l.preset(section.preset))
+                throw InputError(s.field("preset"), "is not a preset of this lesson (got \"" +
+                                                        section.preset + "\")");
+        } else if (s.has("preset")) {
+            throw InputError(s.field("preset"), "only a \"by-hand\" section names a preset");
         }
         l.sections.push_back(std::move(section));
     }

@@ -26,7 +26,8 @@ struct LessonPreset {
 struct LessonSection {
     std::string title;
     std::string text;
-    std::string kind;  // "" (teaching), "by-hand", "mistakes" or "compare"
+    std::string kind;    // "" (teaching), "by-hand", "mistakes" or "compare"
+    std::string preset;  // by-hand: the lesson preset the question works
 };
 
 struct LessonEventNote {
