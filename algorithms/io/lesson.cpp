@@ -76,7 +76,9 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
     for (std::size_t i = 0; i < sections.size(); ++i) {
         Reader s(sections[i], "sections[" + std::to_string(i) + "]");
         s.only({"title", "text", "kind", "preset"});
-        LessonSection section{non_empty(s, "title"), non_empty(s, "text")};
+        LessonSection section;
+        section.title = non_empty(s, "title");
+        section.text = non_empty(s, "text");
         if (s.has("kind")) {
             // What an exam-minded section is: the question worked by hand, the common mistakes,
             // or the advantages and limits the course asks to compare.
@@ -95,8 +97,15 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
             if (!l.preset(section.preset))
                 throw InputError(s.field("preset"), "is not a preset of this lesson (got \"" +
                                                         section.preset + "\")");
+        } else if (section.kind == "mistakes" && s.has("preset")) {
+            // The preset its [step N] links open (the lesson's first when not named).
+            section.preset = non_empty(s, "preset");
+            if (!l.preset(section.preset))
+                throw InputError(s.field("preset"), "is not a preset of this lesson (got \"" +
+                                                        section.preset + "\")");
         } else if (s.has("preset")) {
-            throw InputError(s.field("preset"), "only a \"by-hand\" section names a preset");
+            throw InputError(s.field("preset"),
+                             "only a \"by-hand\" or \"mistakes\" section names a preset");
         }
         l.sections.push_back(std::move(section));
     }
@@ -170,6 +179,26 @@ std::string default_lessons_dir() {
 #else
     return "lessons";
 #endif
+}
+
+std::vector<StepLink> step_links(const std::string& text) {
+    std::vector<StepLink> links;
+    static const std::string kOpen = "[step ";
+    for (std::size_t at = text.find(kOpen); at != std::string::npos; at = text.find(kOpen, at + 1)) {
+        std::size_t i = at + kOpen.size();
+        std::size_t step = 0;
+        const std::size_t digits = i;
+        while (i < text.size() && text[i] >= '0' && text[i] <= '9' && i - digits < 9)
+            step = step * 10 + static_cast<std::size_t>(text[i++] - '0');
+        if (i == digits || i >= text.size() || text[i] != ']') continue;
+        links.push_back({at, i + 1 - at, step});
+    }
+    return links;
+}
+
+const LessonPreset* linked_preset(const Lesson& l, const LessonSection& s) {
+    if (!s.preset.empty()) return l.preset(s.preset);
+    return l.presets.empty() ? nullptr : &l.presets.front();
 }
 
 }  // namespace cg

@@ -27,7 +27,8 @@ struct LessonSection {
     std::string title;
     std::string text;
     std::string kind;    // "" (teaching), "by-hand", "mistakes" or "compare"
-    std::string preset;  // by-hand: the lesson preset the question works
+    std::string preset;  // by-hand: the preset the question works; mistakes: the one its
+                         // [step N] links open (empty: the lesson's first)
 };
 
 struct LessonEventNote {
@@ -53,6 +54,16 @@ struct Lesson {
 // every preset input is accepted by it. Throws InputError naming the field
 // ("presets[1].input.p0[0]: must be a number ..."); the caller adds the file.
 Lesson parse_lesson(const json& j, const Registry& registry);
+
+// "[step N]" in a section's text: a link to step N (as `run --trace` numbers them, from 1) of
+// the section's preset, which the viewer shows as a button. `at`/`size` locate it in the text.
+struct StepLink {
+    std::size_t at = 0, size = 0;
+    std::size_t step = 0;
+};
+std::vector<StepLink> step_links(const std::string& text);
+// The preset a section's links open: its own, or the lesson's first.
+const LessonPreset* linked_preset(const Lesson& l, const LessonSection& s);
 
 struct LessonLibrary {
     std::vector<Lesson> lessons;      // sorted by order, then id

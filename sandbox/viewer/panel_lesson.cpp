@@ -51,14 +51,43 @@ void weight_tooltip(const Lesson& l) {
 
 // --- [lesson text] ---------------------------------------------------------------------------
 
-// Paragraphs, "- " bullets, and $math$ as Unicode; a blank line is a little space.
-void draw_lesson_text(const std::string& text) {
-    const std::string converted = text_to_unicode(text);
+// A paragraph's "[step N]" links: the text shows "(step N)", and a button under the paragraph
+// opens that step of the section's preset.
+void draw_step_buttons(Session& s, const Lesson& l, const LessonSection& section,
+                       const std::vector<StepLink>& links) {
+    const LessonPreset* preset = linked_preset(l, section);
+    if (links.empty() || !preset) return;
+    ImGui::Indent();
+    for (std::size_t i = 0; i < links.size(); ++i) {
+        if (i > 0) ImGui::SameLine();
+        const std::string label = "Show step " + std::to_string(links[i].step);
+        ImGui::PushID(static_cast<int>(links[i].at));
+        if (ImGui::SmallButton(label.c_str())) {
+            if (s.loaded_preset() != preset) s.load_preset(*preset);
+            s.jump(links[i].step);
+        }
+        s.note_widget("step link:" + section.title + ":" + std::to_string(links[i].step));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Step %zu of \"%s\"", links[i].step, preset->name.c_str());
+        ImGui::PopID();
+    }
+    ImGui::Unindent();
+}
+
+// Paragraphs, "- " bullets, and $math$ as Unicode; a blank line is a little space; "[step N]"
+// a button to that step.
+void draw_lesson_text(Session& s, const Lesson& l, const LessonSection& section) {
+    const std::string& text = section.text;
     std::size_t start = 0;
-    while (start <= converted.size()) {
-        std::size_t end = converted.find('\n', start);
-        if (end == std::string::npos) end = converted.size();
-        const std::string line = converted.substr(start, end - start);
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string raw = text.substr(start, end - start);
+        const std::vector<StepLink> links = step_links(raw);
+        for (auto it = links.rbegin(); it != links.rend(); ++it)
+            raw.replace(it->at, it->size, "(step " + std::to_string(it->step) + ")");
+        const std::string line = text_to_unicode(raw);
+        ImGui::PushID(static_cast<int>(start));
         if (line.find_first_not_of(' ') == std::string::npos) {
             ImGui::Spacing();
         } else if (line.rfind("- ", 0) == 0 || line.rfind("* ", 0) == 0) {
@@ -67,6 +96,8 @@ void draw_lesson_text(const std::string& text) {
         } else {
             text_wrapped(line);
         }
+        draw_step_buttons(s, l, section, links);
+        ImGui::PopID();
         start = end + 1;
     }
 }
@@ -178,7 +209,9 @@ void draw_lesson(Session& s, const Lesson& l) {
         text_wrapped(section.title);
         ImGui::PopStyleColor();
         ImGui::PopFont();
-        draw_lesson_text(section.text);
+        ImGui::PushID(&section);
+        draw_lesson_text(s, l, section);
+        ImGui::PopID();
         ImGui::Spacing();
         ImGui::Spacing();
     }
