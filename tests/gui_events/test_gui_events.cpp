@@ -209,6 +209,26 @@ TEST_CASE("gui events: open a lesson, pick a preset", "[gui-events]") {
     CHECK(d.drawn("lesson:liang-barsky"));
 }
 
+TEST_CASE("gui events: a mistakes section's step link opens that step of its preset",
+          "[gui-events]") {
+    Driver d;
+    d.click("lesson:liang-barsky");
+    const cg::Lesson* lesson = d.session().lessons.find("liang-barsky");
+    REQUIRE(lesson);
+    // Start elsewhere: another preset, stepped on, so that the link must load and jump.
+    d.click("presets");
+    d.click("preset:" + lesson->presets[1].name);
+    d.key(SDLK_RIGHT);
+    REQUIRE(d.session().index() == 1);
+    d.click("step link:Common mistakes:4");
+    REQUIRE(d.session().loaded_preset());
+    CHECK(d.session().loaded_preset()->name == lesson->presets[0].name);
+    CHECK(d.session().index() == 4);
+    d.click("step link:Common mistakes:2");
+    CHECK(d.session().loaded_preset()->name == lesson->presets[0].name);
+    CHECK(d.session().index() == 2);
+}
+
 TEST_CASE("gui events: an exam, answered and checked", "[gui-events]") {
     Driver d;
     d.click("lesson:liang-barsky");
