@@ -9,8 +9,6 @@ namespace cg {
 
 namespace {
 
-constexpr const char* kEdgeName[] = {"", "left", "right", "bottom", "top"};
-
 // Pseudocode, 1-based lines as the steps report them.
 enum Line {
     kLineDeltas = 1,
@@ -76,7 +74,7 @@ void fill_vars(const LiangBarsky::State& s, StepInfo& info) {
     info.vars = {{"dx", s.dx}, {"dy", s.dy}, {"t_enter", s.t_enter}, {"t_leave", s.t_leave}};
     if (s.k > 0) {
         info.vars.push_back({"k", static_cast<long long>(s.k)});
-        info.vars.push_back({"edge", std::string(kEdgeName[s.k])});
+        info.vars.push_back({"edge", std::string(LiangBarsky::kEdgeName[s.k])});
         info.vars.push_back({"p_k", s.p_k});
         info.vars.push_back({"q_k", s.q_k});
         if (s.p_k != 0) info.vars.push_back({"r_k", s.r_k});

@@ -44,6 +44,9 @@ struct LiangBarsky {
     enum class Phase : std::uint8_t { Setup, Edge, Reject, Accept, Done };
     enum class Verdict : std::uint8_t { None, Entering, Leaving, ParallelInside, ParallelOutside };
 
+    // Edge k's name as the course says it: 1 left, 2 right, 3 bottom, 4 top ("" for 0).
+    static constexpr const char* kEdgeName[] = {"", "left", "right", "bottom", "top"};
+
     // One edge's test, as the student writes it in the table: p_k, q_k, r_k = q_k / p_k (0 when
     // p_k = 0) and what the line does there.
     struct EdgeTest {

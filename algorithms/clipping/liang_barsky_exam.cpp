@@ -60,10 +60,9 @@ std::string LiangBarsky::question(const Input& in) {
 // The table first, a row an edge tested (p, q, r where p ≠ 0, what the line does), then the
 // five final values: every number the question asks for is graded.
 std::vector<std::string> LiangBarsky::answer_fields(const Input& in) {
-    static constexpr const char* kEdge[] = {"", "left", "right", "bottom", "top"};
     std::vector<std::string> fields;
     for (const EdgeTest& e : clip(in).edges) {
-        const std::string at = std::string("edges/") + kEdge[e.k] + "/";
+        const std::string at = std::string("edges/") + kEdgeName[e.k] + "/";
         fields.push_back(at + "p");
         fields.push_back(at + "q");
         if (e.p != 0) fields.push_back(at + "r");

@@ -35,7 +35,6 @@ struct JsonIo<LiangBarsky> {
     static json result(const LiangBarsky::Result& r) {
         // The table a student writes, one row an edge tested: p, q, r (null where p = 0) and
         // what the line does there.
-        static constexpr const char* kEdge[] = {"", "left", "right", "bottom", "top"};
         json edges = json::object();
         for (const LiangBarsky::EdgeTest& e : r.edges) {
             using V = LiangBarsky::Verdict;
@@ -44,10 +43,10 @@ struct JsonIo<LiangBarsky> {
                                    : e.verdict == V::ParallelInside ? "parallel inside"
                                                                     : "parallel outside";
             // + 0.0: −dy of a horizontal segment is −0, which a person writes 0.
-            edges[kEdge[e.k]] = {{"p", e.p + 0.0},
-                                 {"q", e.q + 0.0},
-                                 {"r", e.p != 0 ? json(e.r) : json(nullptr)},
-                                 {"crossing", crossing}};
+            edges[LiangBarsky::kEdgeName[e.k]] = {{"p", e.p + 0.0},
+                                                  {"q", e.q + 0.0},
+                                                  {"r", e.p != 0 ? json(e.r) : json(nullptr)},
+                                                  {"crossing", crossing}};
         }
         return json{{"visible", r.visible},
                     {"t_enter", r.t_enter},
