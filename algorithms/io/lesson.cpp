@@ -88,24 +88,19 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
                                                   "\"compare\" (got \"" + section.kind + "\")");
         }
         // A question worked by hand names the preset it works, so that its numbers can be held
-        // to that preset's run (tests/lessons/test_by_hand.cpp) and the viewer can load it.
-        if (section.kind == "by-hand") {
-            if (!s.has("preset"))
-                throw InputError(s.field("preset"), "a \"by-hand\" section names the preset it "
-                                                    "works (one of the lesson's presets)");
+        // to that preset's run (tests/lessons/test_by_hand.cpp) and the viewer can load it; a
+        // mistakes section may name the preset its [step N] links open (else the first).
+        if (s.has("preset")) {
+            if (section.kind != "by-hand" && section.kind != "mistakes")
+                throw InputError(s.field("preset"),
+                                 "only a \"by-hand\" or \"mistakes\" section names a preset");
             section.preset = non_empty(s, "preset");
             if (!l.preset(section.preset))
                 throw InputError(s.field("preset"), "is not a preset of this lesson (got \"" +
                                                         section.preset + "\")");
-        } else if (section.kind == "mistakes" && s.has("preset")) {
-            // The preset its [step N] links open (the lesson's first when not named).
-            section.preset = non_empty(s, "preset");
-            if (!l.preset(section.preset))
-                throw InputError(s.field("preset"), "is not a preset of this lesson (got \"" +
-                                                        section.preset + "\")");
-        } else if (s.has("preset")) {
-            throw InputError(s.field("preset"),
-                             "only a \"by-hand\" or \"mistakes\" section names a preset");
+        } else if (section.kind == "by-hand") {
+            throw InputError(s.field("preset"), "a \"by-hand\" section names the preset it "
+                                                "works (one of the lesson's presets)");
         }
         l.sections.push_back(std::move(section));
     }
