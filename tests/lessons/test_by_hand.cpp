@@ -14,13 +14,11 @@
 
 #include "io/lesson.hpp"
 #include "io/registry.hpp"
+#include "support/registry_run.hpp"
 
 namespace {
 
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
+using cg::test::registry;
 
 // A number as written: its value and how many decimals it was written with.
 struct Written {
@@ -153,12 +151,6 @@ const std::set<std::string> kStillToWrite = {
     "texture-map", "bump-map", "bvh", "uniform-grid", "keyframes", "orientation-interpolation",
 };
 
-std::string join(const std::vector<std::string>& v) {
-    std::string s;
-    for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
-    return s;
-}
-
 }  // namespace
 
 TEST_CASE("by-hand: the number reader sees what a student reads", "[lessons][by-hand]") {
@@ -229,7 +221,7 @@ TEST_CASE("by-hand: every number in a worked question is its preset's run", "[le
             ++sections;
             const cg::LessonPreset* preset = l.preset(s.preset);
             REQUIRE(preset);
-            const Pool pool = run_pool(*registry().find(l.algorithm), preset->input);
+            const Pool pool = run_pool(cg::test::algorithm(l.algorithm), preset->input);
             for (const Written& w : numbers_in(s.text)) {
                 // Counting words written as numerals (two levels, 4 edges) need no run.
                 if (w.decimals == 0 && std::abs(w.value) <= 10) continue;
@@ -254,8 +246,8 @@ TEST_CASE("by-hand: every lesson the exam weighs works a question by hand", "[le
         if (!has && !kStillToWrite.count(l.id)) missing.push_back(l.id);
         if (has && kStillToWrite.count(l.id)) stale.push_back(l.id);
     }
-    INFO("missing a by-hand section: " << join(missing));
+    INFO("missing a by-hand section: " << Catch::Detail::stringify(missing));
     CHECK(missing.empty());
-    INFO("written, so take it off kStillToWrite: " << join(stale));
+    INFO("written, so take it off kStillToWrite: " << Catch::Detail::stringify(stale));
     CHECK(stale.empty());
 }

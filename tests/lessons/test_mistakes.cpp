@@ -8,22 +8,9 @@
 
 #include "io/lesson.hpp"
 #include "io/registry.hpp"
+#include "support/registry_run.hpp"
 
-namespace {
-
-const cg::Registry& registry() {
-    static const cg::Registry r = cg::builtin_registry();
-    return r;
-}
-
-std::string join(const std::set<std::string>& v) {
-    std::string s;
-    for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
-    return s;
-}
-
-
-}  // namespace
+using cg::test::registry;
 
 TEST_CASE("mistakes: [step N] links are read from the text", "[lessons][mistakes]") {
     const auto links = cg::step_links("- swapped them [step 3]; see [step 12] and [step x] [step 4");
@@ -39,7 +26,7 @@ TEST_CASE("mistakes: each bullet links the step where its mistake bites", "[less
     REQUIRE(lib.errors.empty());
     int sections = 0, links = 0;
     for (const cg::Lesson& l : lib.lessons) {
-        const cg::Algorithm& a = *registry().find(l.algorithm);
+        const cg::Algorithm& a = cg::test::algorithm(l.algorithm);
         std::set<std::string> bug_events;
         for (const cg::Mistake& m : a.spec->study.mistakes) bug_events.insert(m.event);
         for (const cg::LessonSection& s : l.sections) {
@@ -65,7 +52,7 @@ TEST_CASE("mistakes: each bullet links the step where its mistake bites", "[less
                 REQUIRE(link.step >= 1);
                 REQUIRE(link.step < events.size());
                 if (is_mistakes) {
-                    CAPTURE(events[link.step], join(bug_events));
+                    CAPTURE(events[link.step], bug_events);
                     CHECK(bug_events.count(events[link.step]));
                     linked.insert(events[link.step]);
                 }
@@ -105,7 +92,7 @@ TEST_CASE("mistakes: every lesson lists its common mistakes", "[lessons][mistake
         if (std::none_of(l.sections.begin(), l.sections.end(),
                          [](const cg::LessonSection& s) { return s.kind == "mistakes"; }))
             missing.insert(l.id);
-    INFO("missing a mistakes section: " << join(missing));
+    INFO("missing a mistakes section: " << Catch::Detail::stringify(missing));
     CHECK(missing.empty());
     CHECK(lib.lessons.size() >= 63);
 }
