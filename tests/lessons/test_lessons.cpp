@@ -421,3 +421,19 @@ TEST_CASE("lessons: the Liang-Barsky by-hand table is the algorithm's own run", 
     CHECK(text.find("Q_1 = P(" + cg::num(r["t_leave"].get<double>()) + ") = " + cg::num(q1)) !=
           std::string::npos);
 }
+
+TEST_CASE("lessons: the comparisons the course asks for have a compare section", "[lessons]") {
+    // The course asks to compare the hidden-surface algorithms, the shading models, Phong with
+    // Blinn-Phong, the two trackballs, Euler angles with quaternions and radiosity with ray
+    // tracing: each of those lessons says the advantages and limits in a "compare" section.
+    const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", registry());
+    for (const char* id : {"backface-cull", "z-buffer", "painters", "warnock", "shading",
+                           "phong-lighting", "virtual-sphere", "arcball", "euler-angles",
+                           "quaternion", "radiosity"}) {
+        CAPTURE(id);
+        const cg::Lesson* l = lib.find(id);
+        REQUIRE(l);
+        CHECK(std::any_of(l->sections.begin(), l->sections.end(),
+                          [](const cg::LessonSection& s) { return s.kind == "compare"; }));
+    }
+}
