@@ -186,8 +186,10 @@ void Painters::draw(const State& s, Scene& scene) {
     };
     if (shows(Role::Kept)) chart.legend.push_back({"drawn", {Role::Kept, 2.0f}, false});
     if (shows(Role::Active))
-        chart.legend.push_back(
-            {s.last == Phase::Draw ? "drawn now" : "P", {Role::Active, 3.0f}, false});
+        chart.legend.push_back({s.last == Phase::Draw ? "drawn now"
+                                : split               ? "P, and the new pieces"
+                                                      : "P",
+                                {Role::Active, 3.0f}, false});
     if (shows(Role::Entering)) chart.legend.push_back({"Q", {Role::Entering, 3.0f}, false});
 }
 
