@@ -437,3 +437,27 @@ TEST_CASE("lessons: the comparisons the course asks for have a compare section",
                           [](const cg::LessonSection& s) { return s.kind == "compare"; }));
     }
 }
+
+TEST_CASE("lessons: a painter's preset shows the marking rule split a cycle", "[lessons]") {
+    // The rule the lesson teaches: a polygon moved to the far end is marked, and a marked one
+    // that would have to move again is split. One preset must take that path.
+    const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", registry());
+    const cg::Lesson* l = lib.find("painters");
+    REQUIRE(l);
+    int presets_with_cycle = 0;
+    for (const cg::LessonPreset& p : l->presets) {
+        auto run = registry().find("painters")->create(p.input);
+        int moves_before_split = 0;
+        bool cyclic_split = false;
+        while (!run->done()) {
+            cg::StepInfo info;
+            run->step(&info);
+            if (info.event == "move") ++moves_before_split;
+            if (info.event == "split" && moves_before_split > 0 &&
+                info.narration.find("moved already") != std::string::npos)
+                cyclic_split = true;
+        }
+        presets_with_cycle += cyclic_split;
+    }
+    CHECK(presets_with_cycle >= 1);
+}
