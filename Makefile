@@ -27,7 +27,9 @@ build-sanitize: deps
 	@cmake --preset sanitize >/dev/null
 	@cmake --build --preset sanitize
 
-run: build
+# Only what the viewer needs (the library and cgsandbox), not every test and benchmark.
+run: configure
+	@cmake --build --preset default --target cgsandbox
 	@build/bin/cgsandbox
 
 test: test-normal test-sanitize

@@ -37,7 +37,7 @@ const json& non_empty_array(const Reader& r, const char* key) {
 
 }  // namespace
 
-Lesson parse_lesson(const json& j, const Registry& registry) {
+Lesson parse_lesson(const json& j, const Registry& registry, PresetCheck presets_check) {
     Reader r(j);
     r.only({"id", "title", "topic", "order", "exam", "algorithm", "presets", "sections", "events"});
     Lesson l;
@@ -64,10 +64,13 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
         p.only({"name", "input"});
         LessonPreset preset{non_empty(p, "name"), p.get("input")};
         if (l.preset(preset.name)) throw InputError(p.field("name"), "repeats \"" + preset.name + "\"");
-        try {
-            algorithm->create(preset.input);
-        } catch (const InputError& e) {
-            throw InputError(p.field("input") + (e.field().empty() ? "" : "." + e.field()), e.reason());
+        if (presets_check == PresetCheck::Now) {
+            try {
+                algorithm->check(preset.input);
+            } catch (const InputError& e) {
+                throw InputError(p.field("input") + (e.field().empty() ? "" : "." + e.field()),
+                                 e.reason());
+            }
         }
         l.presets.push_back(std::move(preset));
     }
@@ -126,7 +129,7 @@ Lesson parse_lesson(const json& j, const Registry& registry) {
     return l;
 }
 
-LessonLibrary load_lessons(const std::string& dir, const Registry& registry) {
+LessonLibrary load_lessons(const std::string& dir, const Registry& registry, PresetCheck presets) {
     LessonLibrary lib;
     std::vector<std::filesystem::path> files;
     std::error_code ec;
@@ -141,7 +144,7 @@ LessonLibrary load_lessons(const std::string& dir, const Registry& registry) {
         try {
             std::ifstream f(path, std::ios::binary);
             std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-            Lesson l = parse_lesson(parse_json(text), registry);
+            Lesson l = parse_lesson(parse_json(text), registry, presets);
             l.file = path.string();
             if (lib.find(l.id)) throw InputError("id", "repeats the id \"" + l.id + "\" of another lesson");
             lib.lessons.push_back(std::move(l));

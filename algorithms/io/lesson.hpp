@@ -50,10 +50,16 @@ struct Lesson {
     const LessonEventNote* note_for(const std::string& event) const;
 };
 
+// When a lesson's preset inputs are checked against the algorithm: as the file is read (the
+// CLI, the tests, `cgsandbox lessons`), or when a preset is loaded (the viewer: checking all
+// 475 at start-up took half a second of the browser build's first frame; a preset the
+// algorithm refuses then opens in the input editor with its error, as any refused input does).
+enum class PresetCheck { Now, WhenLoaded };
+
 // Parses and checks one lesson: the algorithm exists, every event kind is one it declares,
-// every preset input is accepted by it. Throws InputError naming the field
-// ("presets[1].input.p0[0]: must be a number ..."); the caller adds the file.
-Lesson parse_lesson(const json& j, const Registry& registry);
+// every preset input is accepted by it (unless `presets` defers that). Throws InputError naming
+// the field ("presets[1].input.p0[0]: must be a number ..."); the caller adds the file.
+Lesson parse_lesson(const json& j, const Registry& registry, PresetCheck presets = PresetCheck::Now);
 
 // "[step N]" in a section's text: a link to step N (as `run --trace` numbers them, from 1) of
 // the section's preset, which the viewer shows as a button. `at`/`size` locate it in the text.
@@ -73,7 +79,8 @@ struct LessonLibrary {
 };
 
 // Loads every *.json in `dir`; a broken file becomes an error line, the others still load.
-LessonLibrary load_lessons(const std::string& dir, const Registry& registry);
+LessonLibrary load_lessons(const std::string& dir, const Registry& registry,
+                           PresetCheck presets = PresetCheck::Now);
 
 // The lessons folder: $CGSANDBOX_LESSONS if set, else the source tree's lessons/.
 std::string default_lessons_dir();

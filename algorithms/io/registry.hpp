@@ -25,6 +25,9 @@ struct Algorithm {
     const Spec* spec = nullptr;
     std::function<json()> example;                              // a valid sample input
     std::function<std::unique_ptr<Run>(const json&)> create;    // throws InputError
+    // Accepts and refuses exactly what create() does, with the same error, but prepares no run
+    // (no hierarchy built, no study measured): what loading a lesson's presets needs.
+    std::function<void(const json&)> check;
     std::function<json(const Run&)> result;                     // the result of a finished run
 
     // Exam practice; empty when the algorithm has no generator (see io/exam.hpp).
@@ -86,6 +89,13 @@ concept HasExam = requires(Rng& rng, const typename A::Input& in) {
     { A::question(in) } -> std::convertible_to<std::string>;
 } && (HasFixedAnswers<A> || HasInputAnswers<A>);
 
+// An algorithm whose start() prepares something heavy (a hierarchy, a study's measurements)
+// says in a static check(const Input&) what start() would refuse, without preparing it; for
+// the others check() is start() discarded. The fuzz oracle holds check() to create() on every
+// input it runs (tests/fuzz/oracles.hpp).
+template <class A>
+concept HasCheck = requires(const typename A::Input& in) { A::check(in); };
+
 template <class A>
 Algorithm make_algorithm() {
     Algorithm a{
@@ -93,6 +103,12 @@ Algorithm make_algorithm() {
         [] { return JsonIo<A>::example(); },
         [](const json& j) -> std::unique_ptr<Run> {
             return std::make_unique<RunOf<A>>(A::start(JsonIo<A>::input(j)));
+        },
+        [](const json& j) {
+            if constexpr (HasCheck<A>)
+                A::check(JsonIo<A>::input(j));
+            else
+                (void)A::start(JsonIo<A>::input(j));
         },
         [](const Run& run) {
             return JsonIo<A>::result(A::result(static_cast<const RunOf<A>&>(run).state));

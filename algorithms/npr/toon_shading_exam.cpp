@@ -29,7 +29,7 @@ glm::ivec3 random_unit_ish(Rng& rng, int& m) {
     return {v[0], v[1], v[2]};
 }
 
-// The triangle at `p0` with outward normal along n: u ⟂ n, v = n × u, (u × v) = |u|² n.
+// The triangle at `p0` with outward normal along n: u ⊥ n, v = n × u, (u × v) = |u|² n.
 void add_triangle(ToonShading::Input& in, glm::dvec3 p0, glm::ivec3 n) {
     const glm::dvec3 nd(n);
     glm::dvec3 u{0, 0, 0};

@@ -193,6 +193,9 @@ struct RayTracer {
 
     static const Spec& spec();
     static void validate(const Input& in);  // throws InputError naming the field
+    // Refuses what start refuses, without building the hierarchy or rendering the preview
+    // (what loading a lesson's presets needs; see make_algorithm).
+    static void check(const Input& in) { validate(in); }
     static State start(const Input& in);
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }

@@ -121,6 +121,9 @@ struct Supersampling {
 
     static const Spec& spec();
     static void validate(const Input& in);
+    // Refuses what start refuses, without measuring a study's error curves (what loading a
+    // lesson's presets needs; see make_algorithm).
+    static void check(const Input& in) { validate(in); }
     static State start(const Input& in);
     static void step(State& s, StepInfo* info);
     static bool done(const State& s) { return s.phase == Phase::Done; }

@@ -28,8 +28,8 @@ bool parallel(dvec3 a, dvec3 b) {
     return glm::length(glm::cross(a, b)) <= 1e-12 * glm::length(a) * glm::length(b);
 }
 
-// The axis whose plane holds the construction: n ⟂ d, L d ∥ d and Lᵀ d ∥ d (so L maps the plane
-// d⟂ into itself and n's image stays in it as well); (0, 0, 0) when there is none.
+// The axis whose plane holds the construction: n ⊥ d, L d ∥ d and Lᵀ d ∥ d (so L maps the plane
+// d⊥ into itself and n's image stays in it as well); (0, 0, 0) when there is none.
 dvec3 plane_axis(const dmat3& l, dvec3 n) {
     for (const dvec3 d : {dvec3(0, 0, 1), dvec3(0, 1, 0), dvec3(1, 0, 0)})
         if (std::fabs(glm::dot(n, d)) <= 1e-12 * glm::length(n) && parallel(l * d, d) &&

@@ -1,6 +1,6 @@
 // Transforming normals, JSON:
 //   input  {"matrix": 3×3 rows, or 4×4 rows of an affine map (its upper 3×3 is used),
-//           "normal": [x, y, z], "tangents": [[x, y, z], [x, y, z]] (optional, ⟂ normal)}
+//           "normal": [x, y, z], "tangents": [[x, y, z], [x, y, z]] (optional, ⊥ normal)}
 //   result {"det", "tangents", "transformed_tangents", "naive_normal" (L n), "naive_cos",
 //           "naive_ok", "inverse_transpose": 3×3 rows, "normal" (N n), "unit_normal", "cos"}
 #include "io/registry.hpp"

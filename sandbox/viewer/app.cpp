@@ -152,7 +152,8 @@ Viewer::Viewer(const Registry& registry, const std::optional<Checkpoint>& initia
     Session& s = *session_;
     // The run first, then the window (see GuiHost: the sanitizer build checks what is
     // allocated before it for leaks).
-    s.lessons = load_lessons(default_lessons_dir(), registry);  // broken files: listed in the UI
+    // Broken files are listed in the UI; a preset's input is checked when it is loaded.
+    s.lessons = load_lessons(default_lessons_dir(), registry, PresetCheck::WhenLoaded);
     if (initial) {
         s.load(*initial);
     } else if (!registry.all().empty()) {

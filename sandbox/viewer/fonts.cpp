@@ -12,25 +12,44 @@ constexpr const char* kSansPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.t
 constexpr const char* kMonoPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 constexpr const char* kBoldPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
 
-// Unicode blocks the course's text uses. The atlas keeps a pointer to this array until it is
-// built, so it must outlive the call: a constant with static storage does.
+// The characters the course's text uses. Whole blocks where text is built from them (Latin-1,
+// the combining marks that put a hat on d̂, Greek, sub- and superscript digits); elsewhere only
+// the characters that appear in algorithms/, sandbox/ and lessons/ — each glyph is rasterised
+// into the atlas at start-up, six times (one per font), and the whole blocks cost 2,119 glyphs a
+// font and a 2048 × 4096 atlas. A test (tests/gui/test_fonts.cpp) reads those folders and names
+// any character missing here: add it to this table. The atlas keeps a pointer to the array
+// until it is built, so it must outlive the call: a constant with static storage does.
 constexpr ImWchar kGlyphRanges[] = {
-    0x0020, 0x024F,  // Basic Latin, Latin-1 (² ³ ·), Latin Extended
-    0x02B0, 0x02FF,  // Spacing Modifier Letters (superscripts ʰ ʲ ʳ ˢ ˣ)
+    0x0020, 0x00FF,  // Basic Latin, Latin-1 (² ³ · ×)
     0x0300, 0x036F,  // Combining Diacritical Marks (the hat of a unit vector: d̂, n̂, q̂)
     0x0370, 0x03FF,  // Greek (θ φ γ)
-    0x1D00, 0x1DBF,  // Phonetic Extensions (superscripts ᵃ ᵏ ᵀ, subscript ᵢ)
-    0x2000, 0x206F,  // General Punctuation (– — … • thin and em spaces)
-    0x2070, 0x209F,  // Superscripts and Subscripts (₀ ₁ ⁿ)
-    0x2100, 0x214F,  // Letterlike Symbols (ℝ ℓ)
-    0x2190, 0x21FF,  // Arrows (← →)
-    0x2200, 0x22FF,  // Mathematical Operators (− ≤ ≥ ∞)
-    0x2300, 0x23FF,  // Miscellaneous Technical (⌈ ⌉)
-    0x25A0, 0x25FF,  // Geometric Shapes (▷ ■)
-    0x2600, 0x26FF,  // Miscellaneous Symbols (⚠)
-    0x2700, 0x27BF,  // Dingbats (✓ ✗)
-    0x27C0, 0x27EF,  // Miscellaneous Mathematical Symbols-A (⟨ ⟩)
-    0x2C60, 0x2C7F,  // Latin Extended-C (subscript ⱼ)
+    0x2070, 0x209F,  // Superscripts and Subscripts (⁰ ⁱ ₀ ₁ ⁿ)
+    0x0101, 0x0101, 0x02B0, 0x02B0, 0x02B2, 0x02B3,  // āʰʲʳ
+    0x02B7, 0x02B8, 0x02C6, 0x02C6, 0x02E1, 0x02E3,  // ʷʸˆˡˢˣ
+    0x1D40, 0x1D40, 0x1D43, 0x1D43, 0x1D47, 0x1D49,  // ᵀᵃᵇᵈᵉ
+    0x1D4D, 0x1D4D, 0x1D4F, 0x1D50, 0x1D52, 0x1D52,  // ᵍᵏᵐᵒ
+    0x1D56, 0x1D58, 0x1D5B, 0x1D5B, 0x1D62, 0x1D65,  // ᵖᵗᵘᵛᵢᵣᵤᵥ
+    0x1D9C, 0x1D9C, 0x1DA0, 0x1DA0, 0x1DBB, 0x1DBB,  // ᶜᶠᶻ
+    0x2013, 0x2014, 0x2016, 0x2016, 0x201C, 0x201D,  // –—‖“”
+    0x2022, 0x2022, 0x2026, 0x2026, 0x2032, 0x2032,  // •…′
+    0x2102, 0x2102, 0x210F, 0x210F, 0x2113, 0x2113,  // ℂℏℓ
+    0x2115, 0x2115, 0x211A, 0x211A, 0x211D, 0x211D,  // ℕℚℝ
+    0x2124, 0x2124, 0x215B, 0x215B, 0x2190, 0x2194,  // ℤ⅛←↑→↓↔
+    0x21A6, 0x21A6, 0x21D0, 0x21D0, 0x21D2, 0x21D2,  // ↦⇐⇒
+    0x21D4, 0x21D4, 0x2200, 0x2200, 0x2202, 0x2205,  // ⇔∀∂∃∄∅
+    0x2207, 0x2209, 0x220B, 0x220B, 0x220F, 0x220F,  // ∇∈∉∋∏
+    0x2211, 0x2213, 0x2216, 0x2218, 0x221A, 0x221B,  // ∑−∓∖∗∘√∛
+    0x221D, 0x221E, 0x2220, 0x2220, 0x2225, 0x2225,  // ∝∞∠∥
+    0x2227, 0x222E, 0x223C, 0x223C, 0x2243, 0x2243,  // ∧∨∩∪∫∬∭∮∼≃
+    0x2248, 0x2248, 0x2260, 0x2261, 0x2264, 0x2265,  // ≈≠≡≤≥
+    0x226A, 0x226B, 0x2272, 0x2273, 0x2282, 0x2283,  // ≪≫≲≳⊂⊃
+    0x2286, 0x2287, 0x2295, 0x2295, 0x2297, 0x2297,  // ⊆⊇⊕⊗
+    0x22A4, 0x22A5, 0x22C5, 0x22C6, 0x22EE, 0x22EF,  // ⊤⊥⋅⋆⋮⋯
+    0x22F1, 0x22F1, 0x2308, 0x230B, 0x25A0, 0x25A1,  // ⋱⌈⌉⌊⌋■□
+    0x25B3, 0x25B3, 0x25B6, 0x25B7, 0x25C0, 0x25C0,  // △▶▷◀
+    0x26A0, 0x26A0, 0x2713, 0x2713, 0x2717, 0x2717,  // ⚠✓✗
+    0x27E8, 0x27E9, 0x27FA, 0x27FA,  // ⟨⟩⟺
+    0x2C7C, 0x2C7C,  // ⱼ
     0,
 };
 
@@ -80,6 +99,12 @@ void apply_style() {
 }
 
 }  // namespace
+
+bool in_glyph_ranges(char32_t c) {
+    for (const ImWchar* r = kGlyphRanges; r[0]; r += 2)
+        if (c >= r[0] && c <= r[1]) return true;
+    return false;
+}
 
 Fonts setup_fonts_and_style() {
     apply_style();

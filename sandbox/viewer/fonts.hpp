@@ -20,4 +20,7 @@ struct Fonts {
 // Also sets the light style that matches the white canvas.
 Fonts setup_fonts_and_style();
 
+// Whether code point c is among the glyphs the atlas is built with (others show as "?").
+bool in_glyph_ranges(char32_t c);
+
 }  // namespace cg::viewer

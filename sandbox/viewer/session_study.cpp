@@ -41,7 +41,10 @@ void Session::load_preset(const LessonPreset& p) {
     const Algorithm* a = l ? registry.find(l->algorithm) : nullptr;
     if (!a) return;
     leave_exam();
-    if (try_start(*a, p.input, 0)) preset = p.name;
+    if (try_start(*a, p.input, 0))
+        preset = p.name;
+    else  // the viewer checks a preset only now (PresetCheck::WhenLoaded): say whose it is
+        set_status(l->file + ": the preset \"" + p.name + "\" is refused: " + input_error, true);
     canvas.fit_pending = true;
 }
 

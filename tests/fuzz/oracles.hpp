@@ -167,13 +167,27 @@ inline void check_scene(const Run& run, std::size_t i, const std::string& who) {
 inline Outcome check_algorithm_input(const Algorithm& a, const json& input) {
     namespace d = oracle_detail;
     const std::string who = a.spec->id;
+    // check() (what loading a lesson runs) accepts and refuses what create() does, saying the same.
+    std::string checked;  // its error; empty when it accepts
+    if (a.check) {
+        try {
+            a.check(input);
+        } catch (const InputError& e) {
+            checked = e.what();
+        }
+    }
     std::unique_ptr<Run> run;
     try {
         run = a.create(input);
-        if (too_costly(a, input)) return {};  // valid, but minutes to run
-    } catch (const InputError&) {
+    } catch (const InputError& e) {
+        if (a.check && checked != e.what())
+            throw OracleViolation(who + ": create refuses the input (" + e.what() + ") but check " +
+                                  (checked.empty() ? "accepts it" : "says " + checked));
         return {};  // refused, with a message naming the field: fine
     }
+    if (!checked.empty())
+        throw OracleViolation(who + ": create accepts the input but check refuses it (" + checked + ")");
+    if (too_costly(a, input)) return {};  // valid, but minutes to run
     Outcome out{true, 0};
     // A copy at steps 0, 1, 2, 4, 8, …: the last one taken is resumed at the end, so the
     // replay covers at least the second half of the run.

@@ -3,6 +3,12 @@
 
 #include <imgui.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <string>
+
 #include "viewer/fonts.hpp"
 
 TEST_CASE("fonts: a combining mark sits on the letter before it and takes no width",
@@ -23,5 +29,68 @@ TEST_CASE("fonts: a combining mark sits on the letter before it and takes no wid
         CHECK(font->CalcTextSizeA(font->FontSize, 1e9f, 0, text).x ==
               font->CalcTextSizeA(font->FontSize, 1e9f, 0, "d").x);
     }
+    ImGui::DestroyContext(context);
+}
+
+namespace {
+
+// Every character past ASCII in the text the viewer shows: the algorithms' narrations and
+// pictures, the viewer's own labels, the lessons. Each with the first file it appears in.
+std::map<char32_t, std::string> characters_used() {
+    std::map<char32_t, std::string> used;
+    for (const char* folder : {"algorithms", "sandbox", "lessons"})
+        for (const auto& entry :
+             std::filesystem::recursive_directory_iterator(std::string(CG_SOURCE_DIR) + "/" + folder)) {
+            const std::string ext = entry.path().extension().string();
+            if (ext != ".cpp" && ext != ".hpp" && ext != ".json") continue;
+            std::ifstream in(entry.path(), std::ios::binary);
+            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            for (std::size_t i = 0; i < text.size();) {
+                const auto b = static_cast<unsigned char>(text[i]);
+                const int n = b < 0x80 ? 1 : b >= 0xF0 ? 4 : b >= 0xE0 ? 3 : 2;
+                char32_t c = n == 1 ? b : b & (0x3F >> (n - 1));
+                for (int k = 1; k < n && i + k < text.size(); ++k)
+                    c = (c << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+                if (c >= 0x80) used.emplace(c, entry.path().lexically_relative(CG_SOURCE_DIR).string());
+                i += n;
+            }
+        }
+    return used;
+}
+
+std::string utf8(char32_t c) {
+    std::string s;
+    if (c < 0x800) {
+        s += static_cast<char>(0xC0 | (c >> 6));
+    } else {
+        if (c < 0x10000) {
+            s += static_cast<char>(0xE0 | (c >> 12));
+        } else {
+            s += static_cast<char>(0xF0 | (c >> 18));
+            s += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+        }
+        s += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    }
+    return s + static_cast<char>(0x80 | (c & 0x3F));
+}
+
+}  // namespace
+
+TEST_CASE("fonts: every character the course's text uses is in the atlas, with a glyph",
+          "[gui][fonts]") {
+    // The atlas holds only the characters listed in fonts.cpp's kGlyphRanges (a smaller atlas
+    // builds faster at start-up); one missing from the list would show as "?".
+    const auto used = characters_used();
+    CHECK(used.size() > 150);
+    ImGuiContext* context = ImGui::CreateContext();
+    const cg::viewer::Fonts fonts = cg::viewer::setup_fonts_and_style();
+    for (const auto& [c, file] : used) {
+        INFO("U+" << std::hex << std::uppercase << static_cast<unsigned>(c) << " \"" << utf8(c)
+                  << "\", used in " << file << ": add it to kGlyphRanges in sandbox/viewer/fonts.cpp");
+        CHECK(cg::viewer::in_glyph_ranges(c));
+        if (c >= 0x300 && c <= 0x36F) continue;  // combining marks: checked above
+        CHECK(fonts.ui->FindGlyphNoFallback(static_cast<ImWchar>(c)) != nullptr);
+    }
+    CHECK_FALSE(cg::viewer::in_glyph_ranges(U'\u2600'));  // ☀: not used, not built
     ImGui::DestroyContext(context);
 }

@@ -41,6 +41,27 @@ TEST_CASE("session: opening a lesson loads its first preset at step 0", "[gui][s
     CHECK(s.lesson() == nullptr);
 }
 
+TEST_CASE("session: a lesson preset the algorithm refuses opens with its error, naming the file",
+          "[gui][session][errors]") {
+    // The viewer loads lessons with PresetCheck::WhenLoaded: a preset is checked as it loads.
+    cg::json j = cg::parse_json(R"({"id": "broken", "title": "Broken", "topic": "clipping",
+        "order": 1, "algorithm": "liang-barsky", "exam": {"weight": "low"},
+        "presets": [{"name": "a bad one", "input": {"window": {"xmin": 0, "ymin": 0, "xmax": 4, "ymax": 4},
+                                           "p0": [0, "two"], "p1": [5, 5]}}],
+        "sections": [{"title": "Idea", "text": "Clip."}]})");
+    cg::Lesson lesson = cg::parse_lesson(j, registry(), cg::PresetCheck::WhenLoaded);
+    lesson.file = "lessons/broken.json";
+    CHECK_THROWS_WITH(cg::parse_lesson(j, registry()), Catch::Contains("presets[0].input"));
+    cg::viewer::Session s(registry());
+    s.lessons.lessons.push_back(lesson);
+    s.open_lesson(s.lessons.lessons.front());
+    CHECK(s.status_is_error);
+    CHECK_THAT(s.status, Catch::Contains("lessons/broken.json: the preset \"a bad one\" is refused: "));
+    CHECK_THAT(s.input_error, Catch::Contains("p0[1]: must be a number"));
+    CHECK(s.input == j["presets"][0]["input"]);  // in the editor, to be mended
+    CHECK(s.loaded_preset() == nullptr);
+}
+
 TEST_CASE("session: an exam's solution stays hidden until revealed", "[gui][session][exam]") {
     cg::viewer::Session s = session();
     const cg::Algorithm& a = *registry().find("liang-barsky");

@@ -122,6 +122,15 @@ TEST_CASE("lessons: broken files give clear errors and the others still load", "
                Catch::Contains("sections[0].kind: must be \"by-hand\", \"mistakes\" or \"compare\" "
                                "(got \"trivia\")"));
 
+    // The viewer checks a preset's input only when it is loaded: the lesson with the bad preset
+    // is listed, its preset input kept as written (the session test loads it).
+    const cg::LessonLibrary deferred =
+        cg::load_lessons(dir.string(), registry(), cg::PresetCheck::WhenLoaded);
+    REQUIRE(deferred.lessons.size() == 2);
+    CHECK(deferred.errors.size() == 8);
+    REQUIRE(deferred.find("e-bad-preset"));
+    CHECK(deferred.find("e-bad-preset")->presets[1].input["p0"] == cg::json({0, "two"}));
+
     // The CLI lists the good one and reports each broken file on stderr.
     auto r = cg::test::run_process({"env", "CGSANDBOX_LESSONS=" + dir.string(), CG_BINARY, "lessons", "--check"});
     CHECK(r.exit_code == 2);

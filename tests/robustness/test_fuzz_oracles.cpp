@@ -252,3 +252,18 @@ TEST_CASE("fuzz oracles: a plain function that disagrees with the run is caught"
     a.plain = [](const json&) { return json{{"k", 40.0 * (1 + 1e-12)}}; };  // within tolerance
     CHECK_NOTHROW(cg::fuzz::check_algorithm_input(a, json::object()));
 }
+
+TEST_CASE("fuzz oracles: a check that accepts or refuses otherwise than create is caught", "[fuzz][oracles]") {
+    cg::Algorithm a = counter(Flaw::None);
+    a.check = [](const json&) {};
+    CHECK(cg::fuzz::check_algorithm_input(a, json::object()).steps == 40);
+    a.check = [](const json&) { throw cg::InputError("k", "too big"); };
+    CHECK_THROWS_WITH(cg::fuzz::check_algorithm_input(a, json::object()),
+                      Catch::Contains("create accepts the input but check refuses it (k: too big)"));
+    a.create = [](const json&) -> std::unique_ptr<cg::Run> { throw cg::InputError("k", "too small"); };
+    CHECK_THROWS_WITH(cg::fuzz::check_algorithm_input(a, json::object()),
+                      Catch::Contains("create refuses the input (k: too small) but check says k: too big"));
+    a.check = [](const json&) {};
+    CHECK_THROWS_WITH(cg::fuzz::check_algorithm_input(a, json::object()),
+                      Catch::Contains("but check accepts it"));
+}
