@@ -13,8 +13,9 @@ constexpr const char* kMonoPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMo
 constexpr const char* kBoldPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
 
 // The characters the course's text uses. Whole blocks where text is built from them (Latin-1,
-// the combining marks that put a hat on d̂, Greek, sub- and superscript digits); elsewhere only
-// the characters that appear in algorithms/, sandbox/ and lessons/ — each glyph is rasterised
+// the combining marks that put a hat on d̂, Greek, punctuation and spaces, sub- and superscript
+// digits); elsewhere only the characters that appear in algorithms/, sandbox/ and lessons/
+// (written out or as \u escapes) — each glyph is rasterised
 // into the atlas at start-up, six times (one per font), and the whole blocks cost 2,119 glyphs a
 // font and a 2048 × 4096 atlas. A test (tests/gui/test_fonts.cpp) reads those folders and names
 // any character missing here: add it to this table. The atlas keeps a pointer to the array
@@ -23,6 +24,7 @@ constexpr ImWchar kGlyphRanges[] = {
     0x0020, 0x00FF,  // Basic Latin, Latin-1 (² ³ · ×)
     0x0300, 0x036F,  // Combining Diacritical Marks (the hat of a unit vector: d̂, n̂, q̂)
     0x0370, 0x03FF,  // Greek (θ φ γ)
+    0x2000, 0x206F,  // General Punctuation (– — … • and the thin and em spaces)
     0x2070, 0x209F,  // Superscripts and Subscripts (⁰ ⁱ ₀ ₁ ⁿ)
     0x0101, 0x0101, 0x02B0, 0x02B0, 0x02B2, 0x02B3,  // āʰʲʳ
     0x02B7, 0x02B8, 0x02C6, 0x02C6, 0x02E1, 0x02E3,  // ʷʸˆˡˢˣ
@@ -30,8 +32,6 @@ constexpr ImWchar kGlyphRanges[] = {
     0x1D4D, 0x1D4D, 0x1D4F, 0x1D50, 0x1D52, 0x1D52,  // ᵍᵏᵐᵒ
     0x1D56, 0x1D58, 0x1D5B, 0x1D5B, 0x1D62, 0x1D65,  // ᵖᵗᵘᵛᵢᵣᵤᵥ
     0x1D9C, 0x1D9C, 0x1DA0, 0x1DA0, 0x1DBB, 0x1DBB,  // ᶜᶠᶻ
-    0x2013, 0x2014, 0x2016, 0x2016, 0x201C, 0x201D,  // –—‖“”
-    0x2022, 0x2022, 0x2026, 0x2026, 0x2032, 0x2032,  // •…′
     0x2102, 0x2102, 0x210F, 0x210F, 0x2113, 0x2113,  // ℂℏℓ
     0x2115, 0x2115, 0x211A, 0x211A, 0x211D, 0x211D,  // ℕℚℝ
     0x2124, 0x2124, 0x215B, 0x215B, 0x2190, 0x2194,  // ℤ⅛←↑→↓↔

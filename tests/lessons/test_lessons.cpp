@@ -1,6 +1,7 @@
 // Lessons, exam generators and worked examples, for every algorithm and every lesson file.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -429,6 +430,30 @@ TEST_CASE("lessons: the Liang-Barsky by-hand table is the algorithm's own run", 
           std::string::npos);
     CHECK(text.find("Q_1 = P(" + cg::num(r["t_leave"].get<double>()) + ") = " + cg::num(q1)) !=
           std::string::npos);
+}
+
+TEST_CASE("lessons: paragraphs are short enough to read at a glance", "[lessons]") {
+    // A paragraph (a line of a section's text) of at most 600 characters: about six lines of
+    // the lesson panel at 1280 × 720. The longest were 1,200-character blocks of formulas.
+    const cg::LessonLibrary lib = cg::load_lessons(CG_SOURCE_DIR "/lessons", registry());
+    std::size_t paragraphs = 0;
+    for (const cg::Lesson& l : lib.lessons)
+        for (const cg::LessonSection& s : l.sections) {
+            std::size_t start = 0;
+            while (start <= s.text.size()) {
+                std::size_t end = s.text.find('\n', start);
+                if (end == std::string::npos) end = s.text.size();
+                const std::string paragraph = s.text.substr(start, end - start);
+                // Characters, not bytes: θ, − and ≤ take two or three bytes each.
+                const auto characters = std::count_if(paragraph.begin(), paragraph.end(),
+                                                      [](char c) { return (c & 0xC0) != 0x80; });
+                CAPTURE(l.id, s.title, paragraph);
+                CHECK(characters <= 600);
+                ++paragraphs;
+                start = end + 1;
+            }
+        }
+    CHECK(paragraphs > 1000);
 }
 
 TEST_CASE("lessons: the comparisons the course asks for have a compare section", "[lessons]") {
